@@ -1,0 +1,52 @@
+// RenderSession: the public entry point of rendering for the CLI and the editor. Owns a copy of
+// the scene, the BVH and one Integrator (Vulkan or CPU, per RenderOptions::device). Driven by one
+// thread; the editor runs it on its render thread and hands edits over between passes.
+#pragma once
+
+#include "render/integrator.h"
+#include "render/render_options.h"
+#include "scene/scene.h"
+#include "util/image.h"
+#include "util/result.h"
+
+#include <memory>
+#include <string>
+
+namespace wavelit::render {
+
+struct RenderStats {
+    int samplesPerPixel = 0;
+    double elapsedSeconds = 0.0; // wall time of passes since the last reset
+    IntegratorTimings timings;
+    std::string deviceName;
+    int validationMessages = 0;
+};
+
+class RenderSession {
+public:
+    // Creates the integrator chosen by options.device (Auto: Vulkan if a device can be created,
+    // else an error unless the CPU tracer is available). Errors name what failed.
+    static util::Result<std::unique_ptr<RenderSession>> create(const scene::Scene& scene,
+                                                                const RenderOptions& options);
+    ~RenderSession();
+
+    util::Status renderPass();
+    int samplesPerPixel() const;
+    util::Result<util::ImageRGB> image();
+    RenderStats stats() const;
+    const RenderOptions& options() const { return m_options; }
+
+    // Replaces the scene (after an edit) and restarts accumulation. Rebuilds only what changed
+    // once change sets are wired (issue 5/6); for now the BVH and uploads are rebuilt.
+    util::Status setScene(const scene::Scene& scene);
+    void resetAccumulation();
+
+private:
+    RenderSession(RenderOptions options);
+    RenderOptions m_options;
+    std::unique_ptr<scene::Scene> m_scene;
+    std::unique_ptr<Integrator> m_integrator;
+    double m_elapsed = 0.0;
+};
+
+} // namespace wavelit::render

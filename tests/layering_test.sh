@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Enforces DESIGN.md §2: each layer includes only layers under it, and nothing below editor/
+# includes Qt. Prints every offending include and exits 1 if there is one.
+set -u
+root=${1:-.}
+cd "$root" || exit 2
+status=0
+check() { # folder, allowed include prefixes (regex alternation)
+    local dir=$1 allowed=$2
+    [ -d "$dir" ] || return 0
+    while IFS= read -r line; do
+        file=${line%%:*}
+        inc=$(sed -E 's/.*#include *"([^"]+)".*/\1/' <<< "${line#*:}")
+        top=${inc%%/*}
+        [ "$top" = "$inc" ] && continue # same-folder include without a layer prefix
+        if ! [[ "$top" =~ ^($allowed)$ ]]; then
+            echo "layering: $file includes \"$inc\" ($dir may use only: $allowed)"
+            status=1
+        fi
+    done < <(grep -rnE '^ *#include *"' "$dir" --include='*.h' --include='*.cpp' | sed -E 's/^([^:]+):[0-9]+:/\1:/')
+}
+check renderer/util 'util'
+check renderer/wavelet 'wavelet|util'
+check renderer/scene 'scene|util'
+check renderer/vk 'vk|util'
+check plugins 'plugins|util'
+check renderer/render 'render|scene|wavelet|vk|plugins|util'
+check renderer/cli 'cli|render|scene|wavelet|vk|plugins|util'
+check editor 'app|viewport|panels|commands|scripting|editor|render|scene|util'
+qt=$(grep -rlnE '#include *<Q[A-Za-z]|#include *<Qt' renderer plugins 2>/dev/null)
+if [ -n "$qt" ]; then
+    echo "layering: Qt included below editor/: $qt"
+    status=1
+fi
+[ $status -eq 0 ] && echo "layering: ok"
+exit $status
