@@ -1,0 +1,242 @@
+#include "scene/image_io.h"
+
+#include "scene/radiance_hdr.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <Iex.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace wavelit::scene {
+
+using util::ErrorKind;
+using util::makeError;
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i dw = file.header().dataWindow();
+        const long long w = (long long)dw.max.x - dw.min.x + 1;
+        const long long h = (long long)dw.max.y - dw.min.y + 1;
+        if (w <= 0 || h <= 0)
+            return makeError(ErrorKind::Format, path, "empty data window");
+        if (w > maxDimension || h > maxDimension)
+            return makeError(ErrorKind::Invalid, path,
+                             std::to_string(w) + "x" + std::to_string(h) + " exceeds the " +
+                                 std::to_string(maxDimension) + " pixel limit per side");
+        const Imf::ChannelList& channels = file.header().channels();
+        const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+        const bool grey = channels.findChannel("Y") != nullptr;
+        if (!rgb && !grey)
+            return makeError(ErrorKind::Unsupported, path, "no R,G,B or Y channels");
+
+        util::ImageRGB image{int(w), int(h)};
+        // Slices address pixel (x, y) of the data window; OpenEXR wants the base pointer shifted
+        // so that (dw.min.x, dw.min.y) lands on pixels[0].
+        char* base = reinterpret_cast<char*>(image.pixels.data()) -
+                     (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * w) * ptrdiff_t(sizeof(glm::vec3));
+        const size_t xs = sizeof(glm::vec3), ys = sizeof(glm::vec3) * size_t(w);
+        Imf::FrameBuffer fb;
+        if (rgb) {
+            fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys, 1, 1, 0.0));
+            fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys, 1, 1, 0.0));
+            fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys, 1, 1, 0.0));
+        } else {
+            fb.insert("Y", Imf::Slice(Imf::FLOAT, base, xs, ys, 1, 1, 0.0));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        if (!rgb)
+            for (auto& p : image.pixels) p = glm::vec3(p.r);
+        return image;
+    } catch (const std::exception& e) {
+        return makeError(ErrorKind::Format, path, std::string("cannot read EXR: ") + e.what());
+    }
+}
+
+// Replaces NaN/Inf/negative texels (or reports the first one). Radiance is non-negative and
+// finite; a single NaN texel would otherwise poison every integral and sampling table built on it.
+util::Status sanitize(LoadedImage& loaded, const std::string& path, bool fix) {
+    size_t nonFinite = 0, negative = 0;
+    for (size_t i = 0; i < loaded.image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            float& v = loaded.image.pixels[i][c];
+            const bool bad = !std::isfinite(v);
+            if (!bad && v >= 0.0f) continue;
+            if (!fix) {
+                int x = int(i % size_t(loaded.image.width)), y = int(i / size_t(loaded.image.width));
+                return makeError(ErrorKind::Invalid, path,
+                                 std::string(bad ? "non-finite" : "negative") + " texel value at (" +
+                                     std::to_string(x) + ", " + std::to_string(y) + ")");
+            }
+            (bad ? nonFinite : negative)++;
+            v = 0.0f;
+        }
+    }
+    if (nonFinite)
+        loaded.warnings.push_back(path + ": " + std::to_string(nonFinite) +
+                                  " NaN/Inf texel values replaced by 0");
+    if (negative)
+        loaded.warnings.push_back(path + ": " + std::to_string(negative) +
+                                  " negative texel values clamped to 0");
+    return util::okStatus();
+}
+
+// Writes through a temporary file in the destination folder and renames it into place, so a
+// failed write never leaves a truncated image where a good one was.
+template <typename WriteFn> util::Status writeAtomically(const std::string& path, WriteFn&& write) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    std::string tmpName = ".";
+    tmpName += target.filename().string();
+    tmpName += ".tmp";
+    tmpName += std::to_string(::getpid());
+    const fs::path tmp = target.parent_path() / tmpName;
+    util::Status written = write(tmp.string());
+    if (!written.ok()) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        return makeError(written.error().kind, path, written.error().reason);
+    }
+    if (FILE* f = std::fopen(tmp.c_str(), "rb")) {
+        ::fsync(fileno(f));
+        std::fclose(f);
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        return makeError(ErrorKind::Io, path, "cannot rename temporary file into place: " + ec.message());
+    }
+    return util::okStatus();
+}
+
+void appendBigEndian(std::string& out, uint32_t v) {
+    out.push_back(char(v >> 24));
+    out.push_back(char(v >> 16));
+    out.push_back(char(v >> 8));
+    out.push_back(char(v));
+}
+
+void appendChunk(std::string& out, const char* type, const std::string& data) {
+    appendBigEndian(out, uint32_t(data.size()));
+    std::string typed = std::string(type, 4) + data;
+    out += typed;
+    appendBigEndian(out, uint32_t(crc32(0, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
+}
+
+float linearToSrgb(float v) {
+    v = std::clamp(v, 0.0f, 1.0f);
+    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+} // namespace
+
+util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOptions& options) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return makeError(ErrorKind::NotFound, path, "no such image file");
+    const std::string ext = lowerExtension(path);
+    util::Result<util::ImageRGB> image = util::ImageRGB{};
+    if (ext == ".exr")
+        image = readExr(path, options.maxDimension);
+    else if (ext == ".hdr" || ext == ".pic")
+        image = readRadianceHdr(path, options.maxDimension);
+    else
+        return makeError(ErrorKind::Unsupported, path, "unknown image type '" + ext + "' (use .exr or .hdr)");
+    if (!image) return image.error();
+    LoadedImage loaded{std::move(image).value(), {}};
+    if (auto s = sanitize(loaded, path, options.sanitize); !s) return s.error();
+    return loaded;
+}
+
+util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
+    if (image.empty()) return makeError(ErrorKind::Invalid, path, "cannot write an empty image");
+    return writeAtomically(path, [&](const std::string& tmp) -> util::Status {
+        try {
+            Imf::Header header(image.width, image.height);
+            header.compression() = Imf::ZIP_COMPRESSION;
+            header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+            header.channels().insert("G", Imf::Channel(Imf::FLOAT));
+            header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+            Imf::OutputFile file(tmp.c_str(), header);
+            char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
+            const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
+            Imf::FrameBuffer fb;
+            fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys));
+            fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys));
+            fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+            file.setFrameBuffer(fb);
+            file.writePixels(image.height);
+        } catch (const std::exception& e) {
+            return makeError(ErrorKind::Io, tmp, std::string("cannot write EXR: ") + e.what());
+        }
+        return util::okStatus();
+    });
+}
+
+util::Status writePng(const std::string& path, const util::ImageRGB& image, float exposureEv) {
+    if (image.empty()) return makeError(ErrorKind::Invalid, path, "cannot write an empty image");
+    const float scale = std::exp2(exposureEv);
+    std::string raw;
+    raw.reserve(size_t(image.height) * (size_t(image.width) * 3 + 1));
+    for (int y = 0; y < image.height; ++y) {
+        raw.push_back(0); // filter type: none
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float v = image.at(x, y)[c] * scale;
+                if (!std::isfinite(v)) v = 0.0f;
+                raw.push_back(char(uint8_t(std::lround(linearToSrgb(v) * 255.0f))));
+            }
+    }
+    uLongf compressedSize = compressBound(uLong(raw.size()));
+    std::string compressed(compressedSize, '\0');
+    if (compress2(reinterpret_cast<Bytef*>(compressed.data()), &compressedSize,
+                  reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size()), 6) != Z_OK)
+        return makeError(ErrorKind::Io, path, "zlib compression failed");
+    compressed.resize(compressedSize);
+
+    std::string png("\x89PNG\r\n\x1a\n", 8), ihdr;
+    appendBigEndian(ihdr, uint32_t(image.width));
+    appendBigEndian(ihdr, uint32_t(image.height));
+    ihdr += std::string("\x08\x02\x00\x00\x00", 5); // 8 bit, RGB, deflate, no filter, no interlace
+    appendChunk(png, "IHDR", ihdr);
+    appendChunk(png, "IDAT", compressed);
+    appendChunk(png, "IEND", "");
+
+    return writeAtomically(path, [&](const std::string& tmp) -> util::Status {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(png.data(), std::streamsize(png.size()));
+        out.flush();
+        if (!out) return makeError(ErrorKind::Io, tmp, "cannot write PNG");
+        return util::okStatus();
+    });
+}
+
+util::Status writeImage(const std::string& path, const util::ImageRGB& image, float exposureEv) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".exr") return writeExr(path, image);
+    if (ext == ".png") return writePng(path, image, exposureEv);
+    return makeError(ErrorKind::Usage, path, "output must end in .exr or .png");
+}
+
+} // namespace wavelit::scene
