@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# README command 1: install what is missing, build, and run the main job.
+#  - with a display (DISPLAY or WAYLAND_DISPLAY set): the editor on the bundled default scene;
+#  - without one: a headless render of the default scene to out/ (EXR + PNG) plus its
+#    speed/error report (out/ring_on_ground_report.json, summary printed).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh release
+scene=resources/scenes/ring_on_ground.wlscene
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x build/release/editor/wavelit ]; then
+    exec build/release/editor/wavelit "$scene" "$@"
+fi
+mkdir -p out
+echo "run: no display; rendering $scene headless"
+build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr \
+    --spp "${WAVELIT_SPP:-64}" --report out/ring_on_ground_report.json "$@"
+build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.png \
+    --spp "${WAVELIT_SPP:-64}" "$@" >/dev/null
+echo "run: images at $(pwd)/out/ring_on_ground.exr and $(pwd)/out/ring_on_ground.png"
+echo "run: report at $(pwd)/out/ring_on_ground_report.json"
