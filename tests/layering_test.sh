@@ -13,6 +13,7 @@ check() { # folder, allowed include prefixes (regex alternation)
         inc=$(sed -E 's/.*#include *"([^"]+)".*/\1/' <<< "${line#*:}")
         top=${inc%%/*}
         [ "$top" = "$inc" ] && continue # same-folder include without a layer prefix
+        [[ "$inc" =~ \.(h|hpp)$ ]] || continue # GLSL includes inside shader strings
         if ! [[ "$top" =~ ^($allowed)$ ]]; then
             echo "layering: $file includes \"$inc\" ($dir may use only: $allowed)"
             status=1
