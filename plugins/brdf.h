@@ -1,0 +1,74 @@
+// BRDF plugins (DESIGN.md §2 "plugins/"): one per .cpp file, looked up by the name a Material
+// stores (scene.h: Material::brdf). Each has a GLSL twin (<name>.glsl) that the Vulkan tracer
+// splices in; both compute docs/estimator.md's formulas, and tests compare them.
+//
+// Contract shared by every plugin:
+// - Directions are unit vectors in the LOCAL shading frame, z = shading normal; wo points away
+//   from the surface toward the viewer, wi toward the light.
+// - eval returns f (sr^-1), WITHOUT the cosine factor; 0 when wo or wi is at or below the horizon.
+// - sample draws wi from u1, u2 in [0,1) and returns f(wo, wi) and the pdf in SOLID ANGLE; a
+//   direction at or below the horizon is an invalid sample (the path ends; docs/estimator.md).
+// - pdf(wo, wi) equals what sample returns for that wi (tests check it), 0 below the horizon.
+// - invert(wo, wi) returns the (u1, u2) that sample maps to wi (STYLE.md: samplers round-trip),
+//   or nothing where no u reaches wi (below the horizon, wo behind the surface).
+// - Plugins are stateless and immutable, so one instance is shared by every thread.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wavelit::plugins {
+
+// The material parameters a BRDF reads (scene::Material carries the same fields).
+struct BrdfParams {
+    glm::vec3 baseColor{0.8f};
+    float roughness = 0.5f; // [0, 1]; GGX alpha = roughness^2 (DESIGN.md §3)
+};
+
+struct BrdfSample {
+    glm::vec3 wi{0.0f, 0.0f, 1.0f};
+    glm::vec3 f{0.0f};
+    float pdf = 0.0f; // solid angle
+    bool valid = false;
+};
+
+// Parameter metadata, so the property registry and the editor's panels can describe plugin
+// parameters without knowing the plugin (STYLE.md: "plugins register their parameters the same
+// way"). `name` is the Material field / JSON key.
+enum class BrdfParameterType { Color, Float };
+
+struct BrdfParameterInfo {
+    const char* name;
+    const char* label;
+    BrdfParameterType type;
+    float minValue;
+    float maxValue;
+    glm::vec3 defaultValue; // Float parameters use .x
+    const char* tooltip;
+};
+
+class Brdf {
+public:
+    virtual ~Brdf() = default;
+    virtual const char* name() const = 0;
+    virtual std::span<const BrdfParameterInfo> parameters() const = 0;
+
+    virtual glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const = 0;
+    virtual BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const = 0;
+    virtual float pdf(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const = 0;
+    virtual std::optional<glm::vec2> invert(const BrdfParams& p, const glm::vec3& wo,
+                                            const glm::vec3& wi) const = 0;
+};
+
+// nullptr when no plugin has that name.
+const Brdf* findBrdf(std::string_view name);
+// Names of every registered plugin, in registration order.
+std::vector<std::string> brdfNames();
+
+} // namespace wavelit::plugins

@@ -1,0 +1,58 @@
+// `lambert`: ideal diffuse reflection, f = baseColor / π, sampled cosine-weighted through the
+// concentric disk map so f·cosθ/pdf = baseColor exactly (zero variance for the BRDF factor).
+// Parameters: baseColor (albedo, each channel in [0, 1]). GLSL twin: lambert.glsl.
+#include "plugins/brdf.h"
+
+#include "util/hemisphere_sampling.h"
+
+#include <array>
+
+namespace wavelit::plugins {
+namespace {
+
+constexpr std::array<BrdfParameterInfo, 1> kParameters{{
+    {"baseColor", "Base colour", BrdfParameterType::Color, 0.0f, 1.0f, glm::vec3(0.8f),
+     "Diffuse albedo: the fraction of light reflected, per channel"},
+}};
+
+class Lambert final : public Brdf {
+public:
+    const char* name() const override { return "lambert"; }
+    std::span<const BrdfParameterInfo> parameters() const override { return kParameters; }
+
+    glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+        if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+        return p.baseColor * util::kInvPi;
+    }
+
+    BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
+        BrdfSample s;
+        if (wo.z <= 0.0f) return s;
+        s.wi = util::sampleCosineHemisphere(glm::vec2(u1, u2));
+        s.pdf = util::cosineHemispherePdf(s.wi);
+        if (s.pdf <= 0.0f) return s; // the disk's rim maps to the horizon: invalid
+        s.f = p.baseColor * util::kInvPi;
+        s.valid = true;
+        return s;
+    }
+
+    float pdf(const BrdfParams&, const glm::vec3& wo, const glm::vec3& wi) const override {
+        if (wo.z <= 0.0f) return 0.0f;
+        return util::cosineHemispherePdf(wi);
+    }
+
+    std::optional<glm::vec2> invert(const BrdfParams&, const glm::vec3& wo,
+                                    const glm::vec3& wi) const override {
+        if (wo.z <= 0.0f || wi.z <= 0.0f) return std::nullopt;
+        return util::invertCosineHemisphere(wi);
+    }
+};
+
+} // namespace
+
+const Brdf& lambertBrdf() {
+    static const Lambert kInstance;
+    return kInstance;
+}
+
+} // namespace wavelit::plugins

@@ -1,0 +1,189 @@
+#include "render/cpu_path_tracer.h"
+
+#include "render/cpu_surface.h"
+#include "render/integrator_factory.h"
+#include "util/hemisphere_sampling.h"
+#include "util/rng.h"
+#include "util/timer.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace wavelit::render {
+namespace {
+
+// docs/estimator.md constants, shared with shaders/path_tracer.comp.
+constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // pass → seed scramble (golden ratio)
+constexpr float kRayOffset = 1e-4f;                      // × max(1, |hit|): scale-aware epsilon
+constexpr float kMinContinueProbability = 0.05f;         // Russian roulette floor of q's complement
+constexpr int kRussianRouletteDepth = 2;
+// Tiles: small enough to balance 2–64 threads on tiny test images, big enough to amortise the
+// atomic fetch.
+constexpr int kTileSize = 16;
+
+} // namespace
+
+util::Result<std::unique_ptr<CpuPathTracer>>
+CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
+                      std::shared_ptr<const scene::Bvh> bvh, const RenderOptions& options,
+                      int threadCount) {
+    using util::ErrorKind;
+    if (!scene || !bvh)
+        return util::makeError(ErrorKind::Invalid, "", "CPU tracer needs a scene and its BVH");
+    if (options.width <= 0 || options.height <= 0)
+        return util::makeError(ErrorKind::Invalid, "",
+                               "image size must be positive, got " + std::to_string(options.width) +
+                                   "x" + std::to_string(options.height));
+    if (options.bounces < 0)
+        return util::makeError(ErrorKind::Invalid, "",
+                               "bounces must be >= 0, got " + std::to_string(options.bounces));
+    if (options.sampler != SamplerKind::Bsdf)
+        return util::makeError(ErrorKind::Unsupported, "",
+                               std::string("sampler '") + samplerKindName(options.sampler) +
+                                   "' is not implemented by the CPU tracer yet (issue 6); use bsdf");
+
+    std::vector<ResolvedMaterial> materials;
+    // The default material sits after the scene's: bvh.cpp gives objects whose material id is
+    // unknown the index materials.size().
+    std::vector<scene::Material> all = scene->materials;
+    all.push_back(scene::Material{});
+    for (size_t i = 0; i < all.size(); ++i) {
+        const scene::Material& m = all[i];
+        const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
+        if (!brdf)
+            return util::makeError(ErrorKind::Unsupported, "",
+                                   "material '" + m.name + "' uses unknown BRDF '" + m.brdf + "'",
+                                   "/materials/" + std::to_string(i) + "/brdf");
+        materials.push_back({brdf, plugins::BrdfParams{m.baseColor, m.roughness}, m.emission});
+    }
+    if (threadCount <= 0) threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
+    return std::unique_ptr<CpuPathTracer>(new CpuPathTracer(
+        std::move(scene), std::move(bvh), options, std::move(materials), threadCount));
+}
+
+CpuPathTracer::CpuPathTracer(std::shared_ptr<const scene::Scene> scene,
+                             std::shared_ptr<const scene::Bvh> bvh, const RenderOptions& options,
+                             std::vector<ResolvedMaterial> materials, int threadCount)
+    : m_scene(std::move(scene)), m_bvh(std::move(bvh)), m_options(options),
+      m_materials(std::move(materials)),
+      m_camera(m_scene->camera, options.width, options.height),
+      m_environment(m_scene->lighting.environment), m_threadCount(threadCount),
+      m_sum(size_t(options.width) * size_t(options.height), glm::dvec3(0.0)) {
+    m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
+}
+
+const CpuPathTracer::ResolvedMaterial& CpuPathTracer::material(float index) const {
+    size_t i = index >= 0.0f ? size_t(index) : m_materials.size() - 1;
+    return m_materials[std::min(i, m_materials.size() - 1)];
+}
+
+glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
+    const uint64_t pixelIndex = uint64_t(y) * uint64_t(m_options.width) + uint64_t(x);
+    util::Pcg32 rng(m_options.seed ^ (uint64_t(pass) * kPassStride), pixelIndex);
+    // Draws are separate statements: C++ leaves the order of function arguments unspecified,
+    // and the draw order is part of the estimator.
+    const float jx = rng.nextFloat();
+    const float jy = rng.nextFloat();
+
+    glm::vec3 origin = m_camera.origin();
+    glm::vec3 dir = m_camera.direction(x, y, jx, jy);
+    glm::vec3 L(0.0f), beta(1.0f);
+    for (int depth = 0;; ++depth) {
+        scene::BvhHit hit;
+        if (!scene::intersect(*m_bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit)) {
+            L += beta * m_environment.radiance(dir);
+            break;
+        }
+        const SurfacePoint sp = surfaceAt(*m_bvh, hit, origin, dir);
+        const ResolvedMaterial& mat = material(sp.materialIndex);
+        const glm::vec3& ng = sp.geometric;
+        const glm::vec3 wo = -dir;
+
+        L += beta * mat.emission;
+        if (depth == m_options.bounces) break;
+
+        // Next-event estimation (env and analytic lights, issue 6) goes here, before the BSDF
+        // sample, with MIS weights for the emission the BSDF-sampled ray then finds.
+
+        const util::Frame frame = util::Frame::fromNormal(sp.shading);
+        const float u1 = rng.nextFloat();
+        const float u2 = rng.nextFloat();
+        plugins::BrdfSample s = mat.brdf->sample(mat.params, frame.toLocal(wo), u1, u2);
+        if (!s.valid || s.pdf <= 0.0f) break;
+        const glm::vec3 wi = frame.toWorld(s.wi);
+        if (glm::dot(wi, ng) <= 0.0f) break; // below the true surface: light leak otherwise
+        beta *= s.f * (s.wi.z / s.pdf);
+
+        if (depth >= kRussianRouletteDepth) {
+            float q = std::max(kMinContinueProbability,
+                               1.0f - std::max(beta.r, std::max(beta.g, beta.b)));
+            if (rng.nextFloat() < q) break;
+            beta /= 1.0f - q;
+        }
+
+        origin = sp.position + ng * (kRayOffset * std::max(1.0f, glm::length(sp.position)));
+        dir = wi;
+    }
+    return L;
+}
+
+util::Status CpuPathTracer::renderPass() {
+    util::Timer timer;
+    const int w = m_options.width, h = m_options.height;
+    const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
+    const int tiles = tilesX * tilesY;
+    const int pass = m_passes;
+    std::atomic<int> next{0};
+    // Workers write disjoint pixels of m_sum: no locking.
+    auto worker = [&] {
+        for (int tile = next++; tile < tiles; tile = next++) {
+            int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+            for (int y = y0; y < std::min(y0 + kTileSize, h); ++y)
+                for (int x = x0; x < std::min(x0 + kTileSize, w); ++x)
+                    m_sum[size_t(y) * size_t(w) + size_t(x)] += glm::dvec3(samplePixel(x, y, pass));
+        }
+    };
+    const int n = std::min(m_threadCount, tiles);
+    std::vector<std::thread> threads;
+    threads.reserve(size_t(std::max(0, n - 1)));
+    for (int i = 1; i < n; ++i) threads.emplace_back(worker);
+    worker(); // the calling thread is worker 0
+    for (std::thread& t : threads) t.join();
+    ++m_passes;
+    m_timings.passSeconds += timer.seconds();
+    return util::okStatus();
+}
+
+util::Result<util::ImageRGB> CpuPathTracer::image() {
+    util::ImageRGB img(m_options.width, m_options.height);
+    if (m_passes == 0) return img;
+    const double inv = 1.0 / m_passes;
+    for (size_t i = 0; i < m_sum.size(); ++i) img.pixels[i] = glm::vec3(m_sum[i] * inv);
+    return img;
+}
+
+void CpuPathTracer::resetAccumulation() {
+    std::fill(m_sum.begin(), m_sum.end(), glm::dvec3(0.0));
+    m_passes = 0;
+    m_timings.passSeconds = 0.0;
+}
+
+std::string CpuPathTracer::deviceName() const {
+    return "CPU reference (" + std::to_string(m_threadCount) + " threads)";
+}
+
+util::Result<std::unique_ptr<Integrator>>
+createCpuPathTracer(std::shared_ptr<const scene::Scene> scene, std::shared_ptr<const scene::Bvh> bvh,
+                    const RenderOptions& options) {
+    auto tracer = CpuPathTracer::create(std::move(scene), std::move(bvh), options);
+    if (!tracer) return tracer.error();
+    return std::unique_ptr<Integrator>(std::move(tracer.value()));
+}
+
+} // namespace wavelit::render
