@@ -1,0 +1,126 @@
+#include "app/main_window.h"
+
+#include "app/editor_actions.h"
+#include "app/error_reporter.h"
+#include "app/scene_document.h"
+#include "panels/outline_panel.h"
+#include "panels/property_panel.h"
+#include "panels/render_status_label.h"
+#include "viewport/camera_orbit_handler.h"
+#include "viewport/viewport_widget.h"
+
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QStatusBar>
+
+namespace wavelit::editor {
+namespace {
+
+QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& name,
+                     QWidget* content, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, window);
+    dock->setObjectName(name);
+    dock->setWidget(content);
+    window->addDockWidget(area, dock);
+    return dock;
+}
+
+} // namespace
+
+MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
+    : QMainWindow(parent), m_document(new SceneDocument(this)), m_errors(new ErrorReporter(this)),
+      m_render(new RenderController(renderSettings, this)), m_viewport(new ViewportWidget(this)),
+      m_outline(new OutlinePanel(this)), m_properties(new PropertyPanel(this)),
+      m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document)),
+      m_cameraHandler(new CameraOrbitHandler(this)) {
+    setObjectName("mainWindow");
+    setWindowTitle(tr("Wavelit"));
+    setCentralWidget(m_viewport);
+    addDock(this, tr("Scene"), "outlineDock", m_outline, Qt::LeftDockWidgetArea);
+    addDock(this, tr("Properties"), "propertyDock", m_properties, Qt::RightDockWidgetArea);
+    statusBar()->addPermanentWidget(m_status);
+    resize(1100, 700);
+    wireDocument();
+    wireRendering();
+    wireViewportHandlers();
+}
+
+// Declared here so the render controller (a child) is destroyed, and its thread joined, while
+// the widgets it signals still exist.
+MainWindow::~MainWindow() { delete m_render; }
+
+void MainWindow::wireDocument() {
+    connect(m_document, &SceneDocument::sceneOpened, this,
+            [this](std::shared_ptr<const scene::Scene> scene, const QString& path) {
+                setWindowTitle(tr("%1 — Wavelit").arg(QFileInfo(path).fileName()));
+                m_outline->setScene(*scene);
+                refreshProperties();
+                m_viewport->clear();
+                m_viewport->setExposure(scene->camera.exposureEv);
+                m_status->showState(tr("starting renderer…"));
+                m_render->render(std::move(scene), path);
+            });
+    connect(m_document, &SceneDocument::sceneEdited, this,
+            [this](std::shared_ptr<const scene::Scene> scene) {
+                m_outline->setScene(*scene);
+                refreshProperties();
+                m_render->render(std::move(scene), m_document->path());
+            });
+    connect(m_document, &SceneDocument::displayChanged, this,
+            [this](std::shared_ptr<const scene::Scene> scene) {
+                m_viewport->setExposure(scene->camera.exposureEv);
+                m_outline->setScene(*scene); // names are display edits too
+                refreshProperties();
+            });
+    connect(m_document, &SceneDocument::openFailed, this,
+            [this](const QString& message) { m_errors->report(tr("Open scene"), message); });
+    connect(m_document, &SceneDocument::saveFailed, this,
+            [this](const QString& message) { m_errors->report(tr("Save scene"), message); });
+    connect(m_document, &SceneDocument::editFailed, this,
+            [this](const QString& message) { m_errors->report(tr("Edit"), message); });
+    connect(m_document, &SceneDocument::saved, this, [this](const QString& path) {
+        statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+        setWindowTitle(tr("%1 — Wavelit").arg(QFileInfo(path).fileName()));
+    });
+    connect(m_outline, &OutlinePanel::entitySelected, this, [this] { refreshProperties(); });
+    connect(m_properties, &PropertyPanel::editRequested, this, [this](const PropertyEdit& edit) {
+        if (auto status = m_document->apply(edit); !status) {
+            m_errors->report(tr("Edit"), QString::fromStdString(status.error().message()));
+            refreshProperties(); // show the value that is still in effect
+        }
+    });
+}
+
+void MainWindow::wireRendering() {
+    connect(m_render, &RenderController::frameReady, this, [this](const RenderFrame& frame) {
+        m_viewport->showFrame(frame);
+        m_status->showFrame(frame);
+    });
+    connect(m_render, &RenderController::failed, this, [this](const QString& message) {
+        m_status->showState(tr("render failed"));
+        m_errors->report(tr("Render"), message);
+    });
+}
+
+void MainWindow::wireViewportHandlers() {
+    m_viewport->installEventFilter(m_cameraHandler);
+    auto follow = [this](std::shared_ptr<const scene::Scene> scene) {
+        m_cameraHandler->setCamera(scene->camera);
+    };
+    connect(m_document, &SceneDocument::sceneOpened, m_cameraHandler, follow);
+    connect(m_document, &SceneDocument::sceneEdited, m_cameraHandler, follow);
+    connect(m_cameraHandler, &CameraOrbitHandler::cameraMoved, this, [this](const glm::vec3& p) {
+        const EntityRef camera{EntityKind::Camera, scene::kInvalidId};
+        if (auto status = m_document->apply({camera, "position", p}); !status)
+            m_errors->report(tr("Camera"), QString::fromStdString(status.error().message()));
+    });
+}
+
+void MainWindow::refreshProperties() {
+    if (auto scene = m_document->scene())
+        m_properties->showEntity(*scene, m_outline->selectedEntity());
+    else
+        m_properties->clear();
+}
+
+} // namespace wavelit::editor

@@ -1,0 +1,53 @@
+// MainWindow: assembles the docks (outline, properties), the viewport and the status bar, and
+// wires signals between them, the document and the render controller. Behaviour lives in those
+// parts (STYLE.md §3: the window does no work of its own).
+#pragma once
+
+#include "viewport/render_controller.h"
+
+#include <QMainWindow>
+
+namespace wavelit::editor {
+
+class CameraOrbitHandler;
+class EditorActions;
+class ErrorReporter;
+class OutlinePanel;
+class PropertyPanel;
+class RenderStatusLabel;
+class SceneDocument;
+class ViewportWidget;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(const RenderSettings& renderSettings, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    SceneDocument* document() const { return m_document; }
+    RenderController* renderer() const { return m_render; }
+    ViewportWidget* viewport() const { return m_viewport; }
+    OutlinePanel* outline() const { return m_outline; }
+    PropertyPanel* properties() const { return m_properties; }
+    ErrorReporter* errors() const { return m_errors; }
+    EditorActions* actions() const { return m_actions; }
+    CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
+
+private:
+    void wireDocument();
+    void wireRendering();
+    void wireViewportHandlers();
+    void refreshProperties();
+
+    SceneDocument* m_document;
+    ErrorReporter* m_errors;
+    RenderController* m_render;
+    ViewportWidget* m_viewport;
+    OutlinePanel* m_outline;
+    PropertyPanel* m_properties;
+    RenderStatusLabel* m_status;
+    EditorActions* m_actions;
+    CameraOrbitHandler* m_cameraHandler;
+};
+
+} // namespace wavelit::editor

@@ -1,0 +1,22 @@
+#include "commands/property_command.h"
+
+namespace wavelit::editor {
+
+PropertyCommand::PropertyCommand(PropertyEdit edit, scene::PropertyValue previous, Commit commit)
+    : m_edit(std::move(edit)), m_previous(std::move(previous)), m_commit(std::move(commit)) {
+    setText(QStringLiteral("Set %1 %2")
+                .arg(scene::entityKindName(m_edit.entity.kind), QString::fromStdString(m_edit.name)));
+}
+
+void PropertyCommand::redo() { m_commit(m_edit); }
+
+void PropertyCommand::undo() { m_commit({m_edit.entity, m_edit.name, m_previous}); }
+
+bool PropertyCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const PropertyCommand*>(other); // same id() => same class
+    if (next->m_edit.entity != m_edit.entity || next->m_edit.name != m_edit.name) return false;
+    m_edit.value = next->m_edit.value; // keep our previous value: undo returns to before both
+    return true;
+}
+
+} // namespace wavelit::editor

@@ -1,0 +1,35 @@
+// PropertyCommand: one property edit on the undo stack. It holds the new and the previous value
+// and applies them through a callback (the document's commit), so commands know nothing of the
+// document or the render thread. Consecutive edits of the same property merge (a camera drag or
+// repeated exposure steps undo in one step).
+#pragma once
+
+#include "commands/property_edit.h"
+
+#include <QUndoCommand>
+
+#include <functional>
+
+namespace wavelit::editor {
+
+class PropertyCommand : public QUndoCommand {
+public:
+    using Commit = std::function<void(const PropertyEdit&)>;
+    static constexpr int kId = 0x5750; // "WP": QUndoStack merges only commands of one id
+
+    PropertyCommand(PropertyEdit edit, scene::PropertyValue previous, Commit commit);
+
+    void redo() override;
+    void undo() override;
+    int id() const override { return kId; }
+    bool mergeWith(const QUndoCommand* other) override;
+
+    const PropertyEdit& edit() const { return m_edit; }
+
+private:
+    PropertyEdit m_edit;
+    scene::PropertyValue m_previous;
+    Commit m_commit;
+};
+
+} // namespace wavelit::editor

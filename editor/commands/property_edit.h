@@ -1,0 +1,34 @@
+// PropertyEdit: one property change as a value (the unit the undo stack and the render queue will
+// carry, STYLE.md "Threads"). apply() checks the value against the registry and returns the edited
+// scene copy (meshes and images are shared, so a copy is cheap) plus what the edit costs: a
+// Display edit (exposure) only re-tone-maps, Restart/Rebuild edits go to the render thread.
+#pragma once
+
+#include "panels/entity_ref.h"
+
+#include "util/result.h"
+
+#include <QMetaType>
+
+#include <memory>
+#include <string>
+
+namespace wavelit::editor {
+
+struct PropertyEdit {
+    EntityRef entity;
+    std::string name;
+    scene::PropertyValue value;
+};
+
+struct AppliedEdit {
+    std::shared_ptr<const scene::Scene> scene; // the scene after the edit
+    scene::PropertyValue previous;             // for undo
+    scene::ChangeKind change = scene::ChangeKind::Restart;
+};
+
+util::Result<AppliedEdit> applyEdit(const scene::Scene& scene, const PropertyEdit& edit);
+
+} // namespace wavelit::editor
+
+Q_DECLARE_METATYPE(wavelit::editor::PropertyEdit)

@@ -1,0 +1,20 @@
+# Runs `wavelit --script SCRIPT --size 64x64` and checks it exits 0 and wrote the images the
+# script saves. Arguments: WAVELIT, SCRIPT, OUT_DIR.
+file(REMOVE_RECURSE ${OUT_DIR})
+file(MAKE_DIRECTORY ${OUT_DIR})
+set(ENV{WAVELIT_SCRIPT_OUT} ${OUT_DIR})
+execute_process(COMMAND ${WAVELIT} --script ${SCRIPT} --size 64x64
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 360)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "wavelit --script exited with '${rc}'")
+endif()
+foreach(f smoke.png smoke.exr)
+    if(NOT EXISTS ${OUT_DIR}/${f})
+        message(FATAL_ERROR "the script did not write ${OUT_DIR}/${f}")
+    endif()
+    file(SIZE ${OUT_DIR}/${f} size)
+    if(size LESS 100)
+        message(FATAL_ERROR "${OUT_DIR}/${f} is only ${size} bytes")
+    endif()
+endforeach()

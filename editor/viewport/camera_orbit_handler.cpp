@@ -1,0 +1,82 @@
+#include "viewport/camera_orbit_handler.h"
+
+#include <QMouseEvent>
+#include <QWheelEvent>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace wavelit::editor {
+
+scene::Camera orbitCamera(const scene::Camera& camera, float yawDeg, float pitchDeg) {
+    const glm::vec3 offset = camera.position - camera.target;
+    const float distance = glm::length(offset);
+    if (distance < kMinDistance) return camera;
+    // Spherical coordinates about +Y (DESIGN.md §3: +Y up).
+    const float pitch = glm::degrees(std::asin(std::clamp(offset.y / distance, -1.0f, 1.0f)));
+    const float yaw = glm::degrees(std::atan2(offset.x, offset.z));
+    const float newPitch = glm::radians(std::clamp(pitch + pitchDeg, -kMaxPitchDeg, kMaxPitchDeg));
+    const float newYaw = glm::radians(yaw + yawDeg);
+    scene::Camera out = camera;
+    out.position = camera.target + distance * glm::vec3(std::cos(newPitch) * std::sin(newYaw),
+                                                        std::sin(newPitch),
+                                                        std::cos(newPitch) * std::cos(newYaw));
+    return out;
+}
+
+scene::Camera dollyCamera(const scene::Camera& camera, float factor) {
+    const glm::vec3 offset = camera.position - camera.target;
+    const float distance = glm::length(offset);
+    if (distance < kMinDistance || !(factor > 0.0f)) return camera;
+    scene::Camera out = camera;
+    out.position = camera.target + offset * (std::max(distance * factor, kMinDistance) / distance);
+    return out;
+}
+
+CameraOrbitHandler::CameraOrbitHandler(QObject* parent) : QObject(parent) {}
+
+void CameraOrbitHandler::setCamera(const scene::Camera& camera) {
+    m_camera = camera;
+    m_hasCamera = true;
+}
+
+bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
+    if (!m_hasCamera) return QObject::eventFilter(watched, event);
+    switch (event->type()) {
+    case QEvent::MouseButtonPress: {
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        if (mouse->button() != Qt::LeftButton) break;
+        m_dragging = true;
+        m_dragStart = m_camera;
+        m_pressPos = mouse->position();
+        return true;
+    }
+    case QEvent::MouseMove: {
+        if (!m_dragging) break;
+        const QPointF delta = static_cast<QMouseEvent*>(event)->position() - m_pressPos;
+        // Dragging right turns the view right: the camera moves the other way round the target.
+        m_camera = orbitCamera(m_dragStart, -float(delta.x()) * kOrbitDegPerPixel,
+                               float(delta.y()) * kOrbitDegPerPixel);
+        emit cameraMoved(m_camera.position);
+        return true;
+    }
+    case QEvent::MouseButtonRelease:
+        if (!m_dragging || static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton) break;
+        m_dragging = false;
+        return true;
+    case QEvent::Wheel: {
+        const float notches = float(static_cast<QWheelEvent*>(event)->angleDelta().y()) / 120.0f;
+        if (notches == 0.0f) break;
+        m_camera = dollyCamera(m_camera, std::pow(kDollyPerWheelStep, notches));
+        emit cameraMoved(m_camera.position);
+        return true;
+    }
+    default: break;
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+} // namespace wavelit::editor

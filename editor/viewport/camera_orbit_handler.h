@@ -1,0 +1,49 @@
+// CameraOrbitHandler: the viewport's camera interaction, one event filter (the appleseed model:
+// one small handler class per interaction). Left-drag orbits the camera about its target (yaw
+// about +Y, pitch clamped short of the poles so `up` stays valid); the wheel dollies toward the
+// target. The handler only proposes a camera position through cameraMoved; the document turns it
+// into a registry edit (a Restart change) and the render thread picks the newest one up between
+// passes, so a fast drag costs one restart per pass, not one per mouse event.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <QObject>
+#include <QPointF>
+
+namespace wavelit::editor {
+
+inline constexpr float kMaxPitchDeg = 85.0f;       // keeps the view direction away from +-up
+inline constexpr float kOrbitDegPerPixel = 0.4f;
+inline constexpr float kDollyPerWheelStep = 0.9f;  // distance factor per 15-degree wheel notch
+inline constexpr float kMinDistance = 1e-3f;
+
+// The camera moved on its orbit sphere: distance to the target unchanged, pitch clamped.
+scene::Camera orbitCamera(const scene::Camera& camera, float yawDeg, float pitchDeg);
+// The camera moved toward the target by `factor` of its distance (< 1 closer), never onto it.
+scene::Camera dollyCamera(const scene::Camera& camera, float factor);
+
+class CameraOrbitHandler : public QObject {
+    Q_OBJECT
+public:
+    explicit CameraOrbitHandler(QObject* parent = nullptr);
+
+    // The camera the next drag starts from (the document's current camera).
+    void setCamera(const scene::Camera& camera);
+    bool isDragging() const { return m_dragging; }
+
+signals:
+    void cameraMoved(const glm::vec3& position);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    scene::Camera m_camera;
+    scene::Camera m_dragStart;
+    QPointF m_pressPos;
+    bool m_hasCamera = false;
+    bool m_dragging = false;
+};
+
+} // namespace wavelit::editor

@@ -1,0 +1,63 @@
+#include "viewport/render_controller.h"
+
+#include "viewport/render_worker.h"
+
+namespace wavelit::editor {
+
+RenderController::RenderController(RenderSettings settings, QObject* parent)
+    : QObject(parent), m_settings(settings), m_cancel(std::make_shared<std::atomic<bool>>(false)),
+      m_framesInFlight(std::make_shared<std::atomic<int>>(0)) {
+    qRegisterMetaType<RenderFrame>();
+    qRegisterMetaType<RenderJob>();
+    m_thread.setObjectName("wavelit-render");
+    m_worker = new RenderWorker(m_cancel, m_framesInFlight);
+    m_worker->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connect(m_worker, &RenderWorker::frameReady, this, &RenderController::onFrame,
+            Qt::QueuedConnection);
+    connect(m_worker, &RenderWorker::failed, this, &RenderController::onFailed,
+            Qt::QueuedConnection);
+    m_thread.start();
+}
+
+RenderController::~RenderController() {
+    cancel();
+    m_thread.quit();
+    m_thread.wait();
+}
+
+void RenderController::render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath) {
+    if (m_cancel->load()) return;
+    RenderJob job;
+    job.generation = ++m_generation;
+    job.maxSamplesPerPixel = m_settings.maxSamplesPerPixel;
+    if (scene) {
+        job.options.width = m_settings.width > 0 ? m_settings.width : scene->render.width;
+        job.options.height = m_settings.height > 0 ? m_settings.height : scene->render.height;
+        job.options.bounces = scene->render.bounces;
+    }
+    job.options.device = m_settings.device;
+    job.options.validation = m_settings.validation;
+    job.scene = std::move(scene);
+    job.scenePath = scenePath.toStdString();
+    m_latest = RenderFrame{};
+    QMetaObject::invokeMethod(
+        m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->submit(std::move(job)); },
+        Qt::QueuedConnection);
+}
+
+void RenderController::cancel() { m_cancel->store(true); }
+
+void RenderController::onFrame(RenderFrame frame) {
+    m_framesInFlight->fetch_sub(1);
+    if (frame.generation != m_generation || m_cancel->load()) return;
+    m_latest = std::move(frame);
+    emit frameReady(m_latest);
+}
+
+void RenderController::onFailed(const QString& message, quint64 generation) {
+    if (generation != m_generation) return;
+    emit failed(message);
+}
+
+} // namespace wavelit::editor

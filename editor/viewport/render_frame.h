@@ -1,0 +1,43 @@
+// What crosses between the UI thread and the render thread, both ways, by value through queued
+// signals. Images are shared immutable (shared_ptr<const>): the render thread never touches an
+// image after publishing it, so neither side needs a lock.
+#pragma once
+
+#include "render/render_options.h"
+#include "scene/scene.h"
+#include "util/image.h"
+
+#include <QMetaType>
+#include <QString>
+
+#include <memory>
+#include <string>
+
+namespace wavelit::editor {
+
+// One render request: a scene snapshot and the options to render it with. Each request gets a
+// new generation so frames of an older scene still in the queue are recognised and dropped.
+struct RenderJob {
+    std::shared_ptr<const scene::Scene> scene;
+    // The scene file relative asset paths start from; assets an edit dropped (a new mesh or
+    // environment path) are loaded from it on the render thread, never on the UI thread.
+    std::string scenePath;
+    render::RenderOptions options;
+    int maxSamplesPerPixel = 0; // stop (idle) once reached; 0 = progressive forever
+    quint64 generation = 0;
+};
+
+// A published frame: the mean linear radiance so far and the statistics that go with it.
+struct RenderFrame {
+    std::shared_ptr<const util::ImageRGB> image;
+    int samplesPerPixel = 0;
+    double elapsedSeconds = 0.0; // render time since the last restart
+    QString deviceName;
+    int validationMessages = 0; // Vulkan validation messages so far (tests require 0)
+    quint64 generation = 0;
+};
+
+} // namespace wavelit::editor
+
+Q_DECLARE_METATYPE(wavelit::editor::RenderJob)
+Q_DECLARE_METATYPE(wavelit::editor::RenderFrame)

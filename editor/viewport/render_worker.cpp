@@ -1,0 +1,131 @@
+#include "viewport/render_worker.h"
+
+#include "scene/scene_io.h"
+
+#include <QTimer>
+
+namespace wavelit::editor {
+namespace {
+
+// A session can take a new scene (setScene) only when everything it was created with is the same.
+bool sameSessionOptions(const render::RenderOptions& a, const render::RenderOptions& b) {
+    return a.width == b.width && a.height == b.height && a.bounces == b.bounces &&
+           a.seed == b.seed && a.device == b.device && a.sampler == b.sampler &&
+           a.vulkanDevice == b.vulkanDevice && a.validation == b.validation;
+}
+
+QString toQString(const util::Error& error) { return QString::fromStdString(error.message()); }
+
+// True when an edit left an asset unloaded (the registry's setter drops a mesh or map whose
+// path changed).
+bool missingAssets(const scene::Scene& scene) {
+    for (const auto& object : scene.objects)
+        if (!object.mesh) return true;
+    return !scene.lighting.environment.path.empty() && !scene.lighting.environment.image;
+}
+
+} // namespace
+
+RenderWorker::RenderWorker(std::shared_ptr<const std::atomic<bool>> cancel,
+                           std::shared_ptr<std::atomic<int>> framesInFlight)
+    : m_cancel(std::move(cancel)), m_framesInFlight(std::move(framesInFlight)) {}
+
+RenderWorker::~RenderWorker() = default;
+
+void RenderWorker::submit(RenderJob job) {
+    m_pending = std::move(job);
+    scheduleStep();
+}
+
+void RenderWorker::scheduleStep() {
+    if (m_stepScheduled) return;
+    m_stepScheduled = true;
+    QTimer::singleShot(0, this, [this] {
+        m_stepScheduled = false;
+        step();
+    });
+}
+
+void RenderWorker::step() {
+    if (m_cancel->load()) return;
+    if (m_pending && !startPendingJob()) return;
+    if (!m_session) return;
+    if (m_maxSpp > 0 && m_session->samplesPerPixel() >= m_maxSpp) return; // idle until a new job
+
+    if (auto status = m_session->renderPass(); !status) {
+        fail(toQString(status.error()));
+        return;
+    }
+    const int spp = m_session->samplesPerPixel();
+    const bool first = m_publishedSpp < 0;
+    const bool last = m_maxSpp > 0 && spp >= m_maxSpp;
+    const bool due = m_sinceFrame.elapsed() >= kFrameIntervalMs &&
+                     m_framesInFlight->load() < kMaxFramesInFlight;
+    if (first || last || due) publish();
+    if (!last) scheduleStep();
+}
+
+bool RenderWorker::startPendingJob() {
+    RenderJob job = std::move(*m_pending);
+    m_pending.reset();
+    m_generation = job.generation;
+    m_maxSpp = job.maxSamplesPerPixel;
+    m_publishedSpp = -1;
+    if (!job.scene) {
+        m_session.reset();
+        return false;
+    }
+    if (missingAssets(*job.scene)) {
+        auto completed = std::make_shared<scene::Scene>(*job.scene);
+        if (auto status = scene::loadAssets(*completed, job.scenePath); !status) {
+            fail(toQString(status.error()));
+            return false;
+        }
+        job.scene = std::move(completed);
+    }
+    if (m_session && sameSessionOptions(m_sessionOptions, job.options)) {
+        if (auto status = m_session->setScene(*job.scene); !status) {
+            fail(toQString(status.error()));
+            return false;
+        }
+        return true;
+    }
+    m_session.reset(); // release the old device before creating the next one
+    auto created = render::RenderSession::create(*job.scene, job.options);
+    if (!created) {
+        fail(toQString(created.error()));
+        return false;
+    }
+    m_session = std::move(created.value());
+    m_sessionOptions = job.options;
+    return true;
+}
+
+void RenderWorker::publish() {
+    auto image = m_session->image();
+    if (!image) {
+        fail(toQString(image.error()));
+        return;
+    }
+    const render::RenderStats stats = m_session->stats();
+    RenderFrame frame;
+    frame.image = std::make_shared<const util::ImageRGB>(std::move(image.value()));
+    frame.samplesPerPixel = stats.samplesPerPixel;
+    frame.elapsedSeconds = stats.elapsedSeconds;
+    frame.deviceName = QString::fromStdString(stats.deviceName);
+    frame.validationMessages = stats.validationMessages;
+    frame.generation = m_generation;
+    m_publishedSpp = frame.samplesPerPixel;
+    m_sinceFrame.restart();
+    m_framesInFlight->fetch_add(1);
+    emit frameReady(std::move(frame));
+}
+
+void RenderWorker::fail(const QString& message) {
+    // A failed session is in an unknown state (device lost, bad scene): drop it; the next job
+    // creates a fresh one.
+    m_session.reset();
+    emit failed(message, m_generation);
+}
+
+} // namespace wavelit::editor

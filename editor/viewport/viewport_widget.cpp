@@ -1,0 +1,48 @@
+#include "viewport/viewport_widget.h"
+
+#include "viewport/tone_map.h"
+
+#include <QPainter>
+
+namespace wavelit::editor {
+namespace {
+const QColor kBackground(38, 38, 42);
+} // namespace
+
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
+    setObjectName("viewport");
+    setMinimumSize(64, 64);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+}
+
+void ViewportWidget::showFrame(const RenderFrame& frame) {
+    m_frame = frame;
+    m_display = frame.image ? toneMap(*frame.image, m_exposureEv) : QImage();
+    update();
+}
+
+void ViewportWidget::clear() {
+    m_frame = RenderFrame{};
+    m_display = QImage();
+    update();
+}
+
+void ViewportWidget::setExposure(float ev) {
+    if (ev == m_exposureEv) return;
+    m_exposureEv = ev;
+    if (m_frame.image) m_display = toneMap(*m_frame.image, m_exposureEv);
+    update();
+}
+
+void ViewportWidget::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.fillRect(rect(), kBackground);
+    if (m_display.isNull()) return;
+    QSize fitted = m_display.size().scaled(size(), Qt::KeepAspectRatio);
+    QRect target(QPoint((width() - fitted.width()) / 2, (height() - fitted.height()) / 2), fitted);
+    // Enlarging a small preview smoothly blurs noise; nearest keeps the pixels honest.
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, fitted.width() < m_display.width());
+    painter.drawImage(target, m_display);
+}
+
+} // namespace wavelit::editor
