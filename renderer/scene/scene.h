@@ -3,7 +3,9 @@
 // the editor's panels and scripting are all driven from that description.
 //
 // Conventions: world space right-handed, +Y up, metres; radiance linear Rec.709.
-// Ids are stable for the lifetime of an entity (saved in files); names are unique per kind.
+// Ids are stable for the lifetime of an entity (saved in files) and unique per kind (materials,
+// objects and lights each; EntityRef and Invalidation carry the kind); names are unique per kind.
+// New entities take nextId(), which is unique across all kinds.
 #pragma once
 
 #include "util/image.h"

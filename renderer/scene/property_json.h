@@ -1,0 +1,44 @@
+// JSON <-> entity through the property registry: the only place property values meet JSON, so
+// no file format code names an individual property. Internal to the scene layer (nlohmann is a
+// private dependency of wavelit_scene).
+#pragma once
+
+#include "scene/property_registry.h"
+#include "util/result.h"
+
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace wavelit::scene {
+
+// ordered_json keeps keys in declaration order, so saving twice gives identical bytes.
+using Json = nlohmann::ordered_json;
+
+// Where a JSON value sits, for messages: file name + JSON pointer ("/objects/2/material").
+struct JsonPlace {
+    std::string file;
+    std::string where;
+    JsonPlace child(const std::string& key) const { return {file, where + "/" + key}; }
+    JsonPlace child(size_t index) const { return {file, where + "/" + std::to_string(index)}; }
+};
+
+util::Error jsonError(util::ErrorKind kind, const JsonPlace& at, const std::string& reason);
+const char* jsonTypeName(const Json& value);
+
+// Converts one JSON value to the property's type and checks range/options/paths.
+util::Result<PropertyValue> valueFromJson(const Json& value, const PropertyInfo& info, const JsonPlace& at);
+Json valueToJson(const PropertyValue& value);
+
+// Reads the registry properties of `kind` from object `obj` into `entity`. Keys listed in
+// `structural` (ids, nested sections) are the caller's; any other unknown key is reported as a
+// warning, so typos surface. Missing optional keys keep the entity's current value.
+util::Status readProperties(const Json& obj, EntityKind kind, void* entity, const JsonPlace& at,
+                            const std::set<std::string>& structural, std::vector<std::string>* warnings);
+
+// Writes the applicable registry properties of `entity` into `obj` in declaration order.
+void writeProperties(Json& obj, EntityKind kind, const void* entity);
+
+} // namespace wavelit::scene

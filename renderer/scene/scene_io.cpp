@@ -1,0 +1,329 @@
+// *.wlscene / *.wllight reading and writing. Every property goes through the registry
+// (property_json.h); this file only knows the document's sections, ids and file references.
+//
+// Lighting references: a scene's "lighting" is either an inline setup or a path to a *.wllight,
+// or to another *.wlscene whose lighting is borrowed (so a shot can share a look with another);
+// such chains are followed with cycle detection. The loaded setup's environment path is always
+// relative to the file Scene::lightingPath names, which is where saveLightingSetup would put it.
+#include "scene/scene_io.h"
+
+#include "scene/atomic_file.h"
+#include "scene/image_io.h"
+#include "scene/mesh_loader.h"
+#include "scene/property_json.h"
+#include "scene/scene_migration.h"
+#include "scene/scene_validation.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace wavelit::scene {
+
+namespace fs = std::filesystem;
+using util::ErrorKind;
+using util::makeError;
+
+namespace {
+
+const std::set<std::string> kSceneKeys = {"format", "version", "name", "camera", "render",
+                                          "materials", "objects", "lighting"};
+const std::set<std::string> kLightingKeys = {"format", "version", "name", "environment", "lights"};
+
+util::Result<Json> readJsonFile(const std::string& path) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such file");
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in) return makeError(ErrorKind::Io, path, "cannot read file");
+    try {
+        return Json::parse(text.str());
+    } catch (const Json::parse_error& e) {
+        // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+        std::string reason = e.what();
+        if (auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
+        return makeError(ErrorKind::Format, path, "invalid JSON: " + reason);
+    }
+}
+
+fs::path folderOf(const std::string& file) {
+    fs::path dir = fs::path(file).parent_path();
+    return dir.empty() ? fs::path(".") : dir;
+}
+
+// `file` as a portable relative path from `folder` (absolute paths are never stored).
+std::string relativeTo(const std::string& file, const fs::path& folder) {
+    return fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal()).generic_string();
+}
+
+std::string lowerExtension(const fs::path& p) {
+    std::string ext = p.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+util::Result<std::string> readName(const Json& doc, const JsonPlace& at) {
+    auto it = doc.find("name");
+    if (it == doc.end()) return std::string();
+    if (!it->is_string()) return jsonError(ErrorKind::Format, at.child("name"), std::string("name: expected a string, got ") + jsonTypeName(*it));
+    return it->get<std::string>();
+}
+
+// Reads an array of entities with ids; a missing id is assigned after the largest one in use.
+template <typename E>
+util::Status readEntities(const Json& doc, const std::string& key, EntityKind kind, std::vector<E>& out,
+                          const JsonPlace& at, std::vector<std::string>* warnings) {
+    auto it = doc.find(key);
+    if (it == doc.end()) return util::okStatus();
+    if (!it->is_array()) return jsonError(ErrorKind::Format, at.child(key), key + ": expected an array, got " + jsonTypeName(*it));
+    std::vector<size_t> unnumbered;
+    for (size_t i = 0; i < it->size(); ++i) {
+        const Json& item = (*it)[i];
+        const JsonPlace here = at.child(key).child(i);
+        E entity;
+        if (auto s = readProperties(item, kind, &entity, here, {"id"}, warnings); !s) return s;
+        if (auto id = item.find("id"); id != item.end()) {
+            if (!id->is_number_unsigned() || id->get<uint64_t>() == kInvalidId)
+                return jsonError(ErrorKind::Format, here.child("id"), std::string("id: expected a positive integer, got ") + jsonTypeName(*id));
+            entity.id = id->get<uint64_t>();
+        } else {
+            unnumbered.push_back(out.size());
+        }
+        out.push_back(std::move(entity));
+    }
+    EntityId next = 1;
+    for (const E& e : out) next = std::max(next, e.id + 1);
+    for (size_t i : unnumbered) out[i].id = next++;
+    return util::okStatus();
+}
+
+// The body of a lighting setup: a *.wllight document or a scene's inline "lighting" object.
+util::Result<LightingSetup> readLightingBody(const Json& obj, const JsonPlace& at, bool topLevel,
+                                             std::vector<std::string>* warnings) {
+    if (!obj.is_object()) return jsonError(ErrorKind::Format, at, std::string("lighting: expected an object, got ") + jsonTypeName(obj));
+    LightingSetup lighting;
+    auto name = readName(obj, at);
+    if (!name) return name.error();
+    lighting.name = *name;
+    if (auto env = obj.find("environment"); env != obj.end())
+        if (auto s = readProperties(*env, EntityKind::Environment, &lighting.environment, at.child("environment"), {}, warnings); !s)
+            return s.error();
+    if (auto s = readEntities(obj, "lights", EntityKind::Light, lighting.lights, at, warnings); !s) return s.error();
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+        if (!kLightingKeys.count(it.key()) || (!topLevel && (it.key() == "format" || it.key() == "version")))
+            if (warnings) warnings->push_back(at.file + ":" + (at.where.empty() ? "/" : at.where) + ": unknown key '" + it.key() + "' ignored");
+    if (auto s = validateLighting(lighting, at.file, at.where); !s) return s.error();
+    return lighting;
+}
+
+Json writeLightingBody(const LightingSetup& lighting) {
+    Json out = Json::object();
+    out["name"] = lighting.name;
+    Json env = Json::object();
+    writeProperties(env, EntityKind::Environment, &lighting.environment);
+    out["environment"] = env;
+    Json lights = Json::array();
+    for (const Light& l : lighting.lights) {
+        Json j = Json::object();
+        j["id"] = l.id;
+        writeProperties(j, EntityKind::Light, &l);
+        lights.push_back(j);
+    }
+    out["lights"] = lights;
+    return out;
+}
+
+// Loads the lighting setup `file` defines or borrows; its environment path is made relative to
+// `file`'s folder. `chain` holds the files already on the way here (cycle detection), starting
+// with the scene being loaded, `rootFile` as the user named it.
+util::Result<LightingSetup> lightingFromFile(const fs::path& file, std::vector<fs::path> chain,
+                                             const std::string& rootFile, std::vector<std::string>* warnings) {
+    const fs::path key = fs::weakly_canonical(file);
+    for (const fs::path& seen : chain)
+        if (seen == key) {
+            std::string loop;
+            for (const fs::path& p : chain) loop += p.filename().string() + " -> ";
+            return makeError(ErrorKind::Invalid, rootFile, "cyclic lighting reference: " + loop + file.filename().string(), "/lighting");
+        }
+    chain.push_back(key);
+    auto doc = readJsonFile(file.string());
+    if (!doc) return doc.error();
+    const std::string ext = lowerExtension(file);
+    if (ext == ".wllight") {
+        if (auto s = checkAndMigrate(*doc, "wavelit-lighting", kLightingFormatVersion, file.string()); !s) return s.error();
+        return readLightingBody(*doc, {file.string(), ""}, true, warnings);
+    }
+    if (ext != ".wlscene") return makeError(ErrorKind::Unsupported, file.string(), "a lighting reference must name a .wllight or .wlscene file");
+    if (auto s = checkAndMigrate(*doc, "wavelit-scene", kSceneFormatVersion, file.string()); !s) return s.error();
+    auto ref = doc->find("lighting");
+    if (ref == doc->end()) return LightingSetup{};
+    if (!ref->is_string()) return readLightingBody(*ref, {file.string(), "/lighting"}, false, warnings);
+    const std::string target = ref->get<std::string>();
+    if (!isPortableRelativePath(target))
+        return makeError(ErrorKind::Invalid, file.string(), "absolute path '" + target + "' not allowed: paths are relative to the file", "/lighting");
+    const fs::path next = folderOf(file.string()) / target;
+    auto lighting = lightingFromFile(next, chain, rootFile, warnings);
+    if (!lighting) return lighting;
+    std::string& env = lighting->environment.path;
+    if (!env.empty())
+        env = (folderOf(next.string()) / env).lexically_normal().lexically_relative(folderOf(file.string())).generic_string();
+    return lighting;
+}
+
+util::Status loadEnvironment(Environment& env, const fs::path& base, const std::string& referrer,
+                             const std::string& where, LoadReport* report) {
+    if (env.path.empty() || env.image) return util::okStatus();
+    auto image = loadImage((base / env.path).lexically_normal().string());
+    if (!image) return makeError(image.error().kind, referrer, image.error().message(), where);
+    if (report) report->warnings.insert(report->warnings.end(), image->warnings.begin(), image->warnings.end());
+    env.image = std::make_shared<const util::ImageRGB>(std::move(image->image));
+    return util::okStatus();
+}
+
+// An error found in a file the scene references is reported from the scene, so the message names
+// both: "a.wlscene:/lighting: studio.wllight:/environment/map: ...".
+util::Error fromScene(const util::Error& e, const std::string& scenePath, const std::string& where) {
+    if (e.file == scenePath) return e;
+    return makeError(e.kind, scenePath, e.message(), where);
+}
+
+util::Status writeJson(const Json& doc, const std::string& path) {
+    return writeFileAtomic(path, doc.dump(2) + "\n");
+}
+
+} // namespace
+
+util::Status loadAssets(Scene& scene, const std::string& scenePath, LoadReport* report) {
+    const fs::path base = folderOf(scenePath);
+    std::map<std::string, std::shared_ptr<const TriangleMesh>> cache;
+    for (const Object& o : scene.objects)
+        if (o.mesh) cache.emplace(o.meshPath, o.mesh);
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        Object& o = scene.objects[i];
+        if (o.mesh) continue;
+        if (auto it = cache.find(o.meshPath); it != cache.end()) {
+            o.mesh = it->second;
+            continue;
+        }
+        auto mesh = loadMesh((base / o.meshPath).lexically_normal().string(), report ? &report->warnings : nullptr);
+        if (!mesh) return makeError(mesh.error().kind, scenePath, mesh.error().message(), "/objects/" + std::to_string(i) + "/mesh");
+        o.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
+        cache.emplace(o.meshPath, o.mesh);
+    }
+    if (scene.lightingPath.empty())
+        return loadEnvironment(scene.lighting.environment, base, scenePath, "/lighting/environment/map", report);
+    const fs::path lightingFile = (base / scene.lightingPath).lexically_normal();
+    return loadEnvironment(scene.lighting.environment, folderOf(lightingFile.string()), lightingFile.string(),
+                           "/environment/map", report);
+}
+
+util::Result<Scene> loadScene(const std::string& path, LoadReport* report) {
+    auto doc = readJsonFile(path);
+    if (!doc) return doc.error();
+    if (auto s = checkAndMigrate(*doc, "wavelit-scene", kSceneFormatVersion, path); !s) return s.error();
+    std::vector<std::string>* warnings = report ? &report->warnings : nullptr;
+    const JsonPlace root{path, ""};
+    Scene scene;
+    auto name = readName(*doc, root);
+    if (!name) return name.error();
+    scene.name = *name;
+    if (auto it = doc->find("camera"); it != doc->end())
+        if (auto s = readProperties(*it, EntityKind::Camera, &scene.camera, root.child("camera"), {}, warnings); !s) return s.error();
+    if (auto it = doc->find("render"); it != doc->end())
+        if (auto s = readProperties(*it, EntityKind::Render, &scene.render, root.child("render"), {}, warnings); !s) return s.error();
+    if (auto s = readEntities(*doc, "materials", EntityKind::Material, scene.materials, root, warnings); !s) return s.error();
+    if (auto s = readEntities(*doc, "objects", EntityKind::Object, scene.objects, root, warnings); !s) return s.error();
+    if (auto it = doc->find("lighting"); it != doc->end()) {
+        if (it->is_string()) {
+            scene.lightingPath = it->get<std::string>();
+            if (!isPortableRelativePath(scene.lightingPath))
+                return makeError(ErrorKind::Invalid, path, "absolute path '" + scene.lightingPath + "' not allowed: paths are relative to the file", "/lighting");
+            auto lighting = lightingFromFile(folderOf(path) / scene.lightingPath, {fs::weakly_canonical(path)}, path, warnings);
+            if (!lighting) return fromScene(lighting.error(), path, "/lighting");
+            scene.lighting = std::move(lighting).value();
+        } else {
+            auto lighting = readLightingBody(*it, root.child("lighting"), false, warnings);
+            if (!lighting) return lighting.error();
+            scene.lighting = std::move(lighting).value();
+        }
+    }
+    for (auto it = doc->begin(); it != doc->end(); ++it)
+        if (!kSceneKeys.count(it.key()) && warnings)
+            warnings->push_back(path + ":/: unknown key '" + it.key() + "' ignored");
+    if (auto s = validateScene(scene, path); !s) return s.error();
+    if (auto s = loadAssets(scene, path, report); !s) return fromScene(s.error(), path, "/lighting");
+    return scene;
+}
+
+util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadReport* report) {
+    auto doc = readJsonFile(path);
+    if (!doc) return doc.error();
+    if (auto s = checkAndMigrate(*doc, "wavelit-lighting", kLightingFormatVersion, path); !s) return s.error();
+    auto lighting = readLightingBody(*doc, {path, ""}, true, report ? &report->warnings : nullptr);
+    if (!lighting) return lighting;
+    if (auto s = loadEnvironment(lighting->environment, folderOf(path), path, "/environment/map", report); !s) return s.error();
+    return lighting;
+}
+
+util::Status saveScene(const Scene& scene, const std::string& path) {
+    Json doc = Json::object();
+    doc["format"] = "wavelit-scene";
+    doc["version"] = kSceneFormatVersion;
+    doc["name"] = scene.name;
+    Json camera = Json::object(), render = Json::object();
+    writeProperties(camera, EntityKind::Camera, &scene.camera);
+    writeProperties(render, EntityKind::Render, &scene.render);
+    doc["camera"] = camera;
+    doc["render"] = render;
+    Json materials = Json::array(), objects = Json::array();
+    for (const Material& m : scene.materials) {
+        Json j = Json::object();
+        j["id"] = m.id;
+        writeProperties(j, EntityKind::Material, &m);
+        materials.push_back(j);
+    }
+    for (const Object& o : scene.objects) {
+        Json j = Json::object();
+        j["id"] = o.id;
+        writeProperties(j, EntityKind::Object, &o);
+        objects.push_back(j);
+    }
+    doc["materials"] = materials;
+    doc["objects"] = objects;
+    doc["lighting"] = scene.lightingPath.empty() ? writeLightingBody(scene.lighting) : Json(scene.lightingPath);
+    return writeJson(doc, path);
+}
+
+util::Status saveLightingSetup(const LightingSetup& lighting, const std::string& path) {
+    Json doc = Json::object();
+    doc["format"] = "wavelit-lighting";
+    doc["version"] = kLightingFormatVersion;
+    const Json body = writeLightingBody(lighting);
+    for (auto it = body.begin(); it != body.end(); ++it) doc[it.key()] = it.value();
+    return writeJson(doc, path);
+}
+
+util::Status attachLightingSetup(Scene& scene, const std::string& scenePath, const std::string& lightingFile,
+                                 LoadReport* report) {
+    auto lighting = loadLightingSetup(lightingFile, report);
+    if (!lighting) return lighting.error();
+    scene.lighting = std::move(lighting).value();
+    scene.lightingPath = relativeTo(lightingFile, folderOf(scenePath));
+    return util::okStatus();
+}
+
+void rebaseScenePaths(Scene& scene, const std::string& fromScenePath, const std::string& toScenePath) {
+    const fs::path from = folderOf(fromScenePath), to = folderOf(toScenePath);
+    auto rebase = [&](std::string& p) {
+        if (!p.empty()) p = relativeTo((from / p).string(), to);
+    };
+    for (Object& o : scene.objects) rebase(o.meshPath);
+    if (scene.lightingPath.empty())
+        rebase(scene.lighting.environment.path);
+    else
+        rebase(scene.lightingPath); // the setup's own map stays relative to its *.wllight
+}
+
+} // namespace wavelit::scene

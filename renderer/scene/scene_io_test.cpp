@@ -1,0 +1,318 @@
+#include "scene/scene_io.h"
+
+#include "scene/change_set.h"
+#include "scene/scene_compare.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace wavelit::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kResources = WAVELIT_RESOURCE_DIR;
+
+std::string readBytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void writeText(const fs::path& p, const std::string& text) {
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+}
+
+// A scratch folder inside resources' sibling layout is not needed: saved scenes reference meshes
+// by relative path, so round trips save next to the originals' folder structure in a temp tree.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() / ("wavelit_scene_io_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+std::vector<fs::path> bundled(const char* folder, const char* ext) {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(kResources / folder))
+        if (e.path().extension() == ext) out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A minimal valid scene text around one object and one material, with an inline constant env.
+std::string sceneText(const std::string& objectExtra = "", const std::string& top = "\"version\": 1") {
+    return R"({"format": "wavelit-scene", )" + top + R"(, "name": "t",
+      "materials": [{"id": 1, "name": "m", "brdf": "lambert"}],
+      "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 1)" + objectExtra + R"(}],
+      "lighting": {"environment": {"intensity": 1}}})";
+}
+
+const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 0 -1\nf 1 2 3\n";
+
+TEST(SceneIo, BundledScenesLoadWithTheirMeshesAndLighting) {
+    auto scenes = bundled("scenes", ".wlscene");
+    ASSERT_GE(scenes.size(), 3u);
+    for (const auto& path : scenes) {
+        auto s = loadScene(path.string());
+        ASSERT_TRUE(s.ok()) << s.error().message();
+        for (const auto& o : s->objects) EXPECT_TRUE(o.mesh && o.mesh->triangleCount() > 0) << o.name;
+        EXPECT_TRUE(s->lighting.environment.image) << path;
+    }
+}
+
+TEST(SceneIo, RingOnGroundIsThePapersScene) {
+    auto s = loadScene((kResources / "scenes/ring_on_ground.wlscene").string());
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    ASSERT_EQ(s->objects.size(), 2u);
+    const Material* ring = s->findMaterial(s->objects[0].materialId);
+    ASSERT_NE(ring, nullptr);
+    EXPECT_EQ(ring->brdf, "ggx");
+    EXPECT_FLOAT_EQ(ring->roughness, 0.2f);
+    EXPECT_EQ(s->findMaterial(s->objects[1].materialId)->brdf, "lambert");
+    EXPECT_EQ(s->objects[0].mesh->triangleCount(), 96u * 24u * 2u); // make_meshes.py torus grid
+    EXPECT_EQ(s->lightingPath, "../lighting/studio_soft.wllight");
+    EXPECT_EQ(s->lighting.environment.path, "../envmaps/studio.exr");
+    EXPECT_EQ(s->lighting.environment.image->width, 1024);
+}
+
+// Round trip for every bundled file: load -> save -> load gives the same model, and saving the
+// reloaded model again gives the same bytes. Saved copies live in a temp tree mirroring
+// resources/ so their relative paths still resolve.
+TEST(SceneIo, EveryBundledFileRoundTrips) {
+    TempDir tmp;
+    for (const char* folder : {"meshes", "envmaps"})
+        fs::create_directory_symlink(kResources / folder, tmp.path / folder);
+    fs::create_directories(tmp.path / "scenes");
+    fs::create_directories(tmp.path / "lighting");
+    int files = 0;
+    for (const auto& path : bundled("lighting", ".wllight")) {
+        auto a = loadLightingSetup(path.string());
+        ASSERT_TRUE(a.ok()) << a.error().message();
+        const fs::path out = tmp.path / "lighting" / path.filename();
+        ASSERT_TRUE(saveLightingSetup(*a, out.string()).ok());
+        auto b = loadLightingSetup(out.string());
+        ASSERT_TRUE(b.ok()) << b.error().message();
+        EXPECT_EQ(firstDifference(*a, *b), "") << path;
+        const std::string first = readBytes(out);
+        ASSERT_TRUE(saveLightingSetup(*b, out.string()).ok());
+        EXPECT_EQ(readBytes(out), first) << path;
+        ++files;
+    }
+    for (const auto& path : bundled("scenes", ".wlscene")) {
+        auto a = loadScene(path.string());
+        ASSERT_TRUE(a.ok()) << a.error().message();
+        const fs::path out = tmp.path / "scenes" / path.filename();
+        ASSERT_TRUE(saveScene(*a, out.string()).ok());
+        auto b = loadScene(out.string());
+        ASSERT_TRUE(b.ok()) << b.error().message();
+        EXPECT_EQ(firstDifference(*a, *b), "") << path;
+        const std::string first = readBytes(out);
+        ASSERT_TRUE(saveScene(*b, out.string()).ok());
+        EXPECT_EQ(readBytes(out), first) << path;
+        ++files;
+    }
+    EXPECT_EQ(files, 6);
+}
+
+TEST(SceneIo, InlineLightingRoundTripsInsideTheScene) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "a.wlscene", sceneText());
+    auto a = loadScene((tmp.path / "a.wlscene").string());
+    ASSERT_TRUE(a.ok()) << a.error().message();
+    a->lighting.lights.push_back(Light{.id = 4, .name = "spot", .type = LightType::Spot, .intensity = 7.5f});
+    ASSERT_TRUE(saveScene(*a, (tmp.path / "b.wlscene").string()).ok());
+    auto b = loadScene((tmp.path / "b.wlscene").string());
+    ASSERT_TRUE(b.ok()) << b.error().message();
+    EXPECT_EQ(firstDifference(*a, *b), "");
+    ASSERT_EQ(b->lighting.lights.size(), 1u);
+    EXPECT_EQ(b->lighting.lights[0].type, LightType::Spot);
+    EXPECT_FLOAT_EQ(b->lighting.lights[0].intensity, 7.5f);
+}
+
+TEST(SceneIo, NewerVersionIsAClearError) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "new.wlscene", sceneText("", "\"version\": 7"));
+    auto s = loadScene((tmp.path / "new.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().kind, util::ErrorKind::Unsupported);
+    EXPECT_EQ(s.error().where, "/version");
+    EXPECT_NE(s.error().reason.find("version 7 is newer"), std::string::npos) << s.error().message();
+}
+
+TEST(SceneIo, VersionZeroIsMigrated) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "old.wlscene", R"({"format": "wavelit-scene", "version": 0,
+      "materials": [{"id": 5, "name": "gold", "brdf": "ggx"}],
+      "objects": [{"id": 1, "mesh": "mesh.obj", "material": "gold"}],
+      "lighting": {"environment": {"exposure": 2}}})");
+    auto s = loadScene((tmp.path / "old.wlscene").string());
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    EXPECT_EQ(s->objects[0].materialId, 5u);
+    EXPECT_FLOAT_EQ(s->lighting.environment.intensity, 4.0f); // 2^2 EV
+}
+
+TEST(SceneIo, VersionZeroLightingIsMigratedAndBadNamesAreReported) {
+    TempDir tmp;
+    writeText(tmp.path / "old.wllight", R"({"format": "wavelit-lighting", "version": 0,
+      "environment": {"exposure": -1}})");
+    auto l = loadLightingSetup((tmp.path / "old.wllight").string());
+    ASSERT_TRUE(l.ok()) << l.error().message();
+    EXPECT_FLOAT_EQ(l->environment.intensity, 0.5f);
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "old.wlscene", R"({"format": "wavelit-scene", "version": 0,
+      "objects": [{"id": 1, "mesh": "mesh.obj", "material": "silver"}]})");
+    auto s = loadScene((tmp.path / "old.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().where, "/objects/0/material");
+    EXPECT_EQ(s.error().reason, "material 'silver' not found");
+}
+
+TEST(SceneIo, ErrorsCarryTheJsonPath) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    struct Case {
+        std::string text, where, fragment;
+    } cases[] = {
+        {sceneText(", \"translation\": \"up\""), "/objects/0/translation", "expected an array of 3 numbers"},
+        {sceneText(", \"scale\": [1, 1]"), "/objects/0/scale", "got an array of 2"},
+        {sceneText(", \"material\": 9"), "/objects/0/material", "material 9, which does not exist"},
+        {sceneText(", \"mesh\": \"/etc/passwd\""), "/objects/0/mesh", "absolute path"},
+        {sceneText(", \"rotation\": [0, 720, 0]"), "/objects/0/rotation", "outside"},
+        {R"({"format": "wavelit-scene", "version": 1, "objects": [{"id": 1, "mesh": "mesh.obj"}]})",
+         "/objects/0", "missing required key 'material'"},
+        {R"({"format": "wavelit-lighting", "version": 1})", "/format", "expected \"wavelit-scene\""},
+    };
+    for (const auto& c : cases) {
+        writeText(tmp.path / "bad.wlscene", c.text);
+        auto s = loadScene((tmp.path / "bad.wlscene").string());
+        ASSERT_FALSE(s.ok()) << c.text;
+        EXPECT_EQ(s.error().where, c.where) << s.error().message();
+        EXPECT_NE(s.error().message().find(c.fragment), std::string::npos) << s.error().message();
+        EXPECT_NE(s.error().file.find("bad.wlscene"), std::string::npos);
+    }
+}
+
+TEST(SceneIo, DuplicateIdsAndNamesAreRejected) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "dup.wlscene", R"({"format": "wavelit-scene", "version": 1,
+      "materials": [{"id": 1, "name": "a", "brdf": "lambert"}, {"id": 1, "name": "b", "brdf": "lambert"}]})");
+    auto s = loadScene((tmp.path / "dup.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().where, "/materials/1/id");
+    writeText(tmp.path / "dup.wlscene", R"({"format": "wavelit-scene", "version": 1,
+      "materials": [{"id": 1, "name": "a", "brdf": "lambert"}, {"id": 2, "name": "a", "brdf": "lambert"}]})");
+    s = loadScene((tmp.path / "dup.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().reason.find("duplicate material name 'a'"), std::string::npos) << s.error().message();
+}
+
+TEST(SceneIo, CyclicLightingReferencesAreFound) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "a.wlscene", R"({"format": "wavelit-scene", "version": 1, "lighting": "b.wlscene"})");
+    writeText(tmp.path / "b.wlscene", R"({"format": "wavelit-scene", "version": 1, "lighting": "a.wlscene"})");
+    auto s = loadScene((tmp.path / "a.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().reason.find("cyclic lighting reference: a.wlscene -> b.wlscene -> a.wlscene"),
+              std::string::npos)
+        << s.error().message();
+}
+
+TEST(SceneIo, BorrowedLightingKeepsItsEnvironmentPathValid) {
+    TempDir tmp;
+    // c.wlscene borrows from sub/b.wlscene, which references ../light/l.wllight.
+    writeText(tmp.path / "light/l.wllight", R"({"format": "wavelit-lighting", "version": 1,
+      "environment": {"map": "../env/e.exr"}})");
+    writeText(tmp.path / "sub/b.wlscene", R"({"format": "wavelit-scene", "version": 1, "lighting": "../light/l.wllight"})");
+    writeText(tmp.path / "c.wlscene", R"({"format": "wavelit-scene", "version": 1, "lighting": "sub/b.wlscene"})");
+    fs::create_directories(tmp.path / "env");
+    fs::copy_file(kResources / "envmaps/studio.exr", tmp.path / "env/e.exr");
+    auto s = loadScene((tmp.path / "c.wlscene").string());
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    EXPECT_EQ(s->lightingPath, "sub/b.wlscene");
+    EXPECT_EQ(s->lighting.environment.path, "../env/e.exr"); // relative to sub/
+    EXPECT_TRUE(s->lighting.environment.image);
+}
+
+TEST(SceneIo, UnknownKeysAreWarnings) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "typo.wlscene", sceneText(", \"roughnes\": 0.3"));
+    LoadReport report;
+    auto s = loadScene((tmp.path / "typo.wlscene").string(), &report);
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_NE(report.warnings[0].find("/objects/0: unknown key 'roughnes'"), std::string::npos) << report.warnings[0];
+}
+
+TEST(SceneIo, MissingMeshNamesSceneObjectAndMesh) {
+    TempDir tmp;
+    writeText(tmp.path / "m.wlscene", sceneText());
+    auto s = loadScene((tmp.path / "m.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().kind, util::ErrorKind::NotFound);
+    EXPECT_EQ(s.error().where, "/objects/0/mesh");
+    EXPECT_NE(s.error().reason.find("mesh.obj: no such mesh file"), std::string::npos) << s.error().message();
+}
+
+// An edit of a path drops the asset (registry setter); loadAssets brings the new one in, resolving
+// a referenced lighting setup's map against the *.wllight's folder.
+TEST(SceneIo, LoadAssetsReloadsWhatAnEditInvalidated) {
+    const std::string path = (kResources / "scenes/ring_on_ground.wlscene").string();
+    auto s = loadScene(path);
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    const auto oldImage = s->lighting.environment.image;
+    const auto groundMesh = s->objects[1].mesh;
+    ChangeSet edit;
+    ASSERT_TRUE(edit.setProperty(*s, {EntityKind::Environment}, "map", std::string("../envmaps/city.exr")).ok());
+    ASSERT_TRUE(edit.setProperty(*s, {EntityKind::Object, s->objects[0].id}, "mesh", std::string("../meshes/uv_sphere.obj")).ok());
+    ASSERT_TRUE(edit.apply(*s).ok());
+    EXPECT_EQ(s->lighting.environment.image, nullptr);
+    ASSERT_TRUE(loadAssets(*s, path).ok());
+    ASSERT_NE(s->lighting.environment.image, nullptr);
+    EXPECT_NE(s->lighting.environment.image, oldImage);
+    EXPECT_EQ(s->objects[0].mesh->triangleCount(), 3968u); // uv_sphere.obj
+    EXPECT_EQ(s->objects[1].mesh, groundMesh);             // untouched assets are kept, not reloaded
+}
+
+TEST(SceneIo, LightingSetupsLoadOntoAnyScene) {
+    TempDir tmp;
+    const std::string from = (kResources / "scenes/glossy_sphere.wlscene").string();
+    auto s = loadScene(from);
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    ASSERT_TRUE(attachLightingSetup(*s, from, (kResources / "lighting/night_emissive.wllight").string()).ok());
+    EXPECT_EQ(s->lightingPath, "../lighting/night_emissive.wllight");
+    EXPECT_EQ(s->lighting.lights.size(), 3u);
+    EXPECT_TRUE(s->lighting.environment.image);
+    // "Save as" elsewhere: paths are rebased so the copy loads the same meshes and lighting.
+    const std::string to = (tmp.path / "deeper/copy.wlscene").string();
+    fs::create_directories(tmp.path / "deeper");
+    rebaseScenePaths(*s, from, to);
+    EXPECT_EQ(fs::weakly_canonical(tmp.path / "deeper" / s->objects[0].meshPath),
+              fs::weakly_canonical(kResources / "meshes/uv_sphere.obj"));
+    ASSERT_TRUE(saveScene(*s, to).ok());
+    auto copy = loadScene(to);
+    ASSERT_TRUE(copy.ok()) << copy.error().message();
+    EXPECT_EQ(firstDifference(*s, *copy), "");
+    EXPECT_EQ(copy->lighting.name, "night_emissive");
+    EXPECT_EQ(copy->objects[0].mesh->triangleCount(), 3968u);
+    EXPECT_FALSE(attachLightingSetup(*copy, to, (tmp.path / "none.wllight").string()).ok());
+    EXPECT_EQ(copy->lighting.name, "night_emissive");
+}
+
+} // namespace
+} // namespace wavelit::scene
