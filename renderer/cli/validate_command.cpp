@@ -1,9 +1,10 @@
 // `wavelit-cli validate FILE` (DESIGN.md §6): loads a scene, lighting setup, mesh or image the way
 // the renderer would. Exit 1 with the first problem when the file cannot be used; exit 0 with a
-// one-line summary when it can. What loading sanitises (NaN/Inf/negative texels replaced by 0,
-// zero-area triangles skipped, unknown keys ignored) is printed as "warning:" lines on stderr and
-// does not fail validation: lossy EXR compression routinely leaves small negative texels (the
-// bundled CC0 HDRIs have 3 to 1818 each, down to -0.0033), so refusing them would refuse good files.
+// one-line summary when it can. What loading would sanitise (NaN/Inf/negative texels replaced by
+// 0, zero-area triangles skipped, unknown keys ignored) is printed as "warning:" lines on stderr
+// and fails validation with exit 1: the renderer and editor load such files after the named repair,
+// but a validator that passed them would let a file that does not mean what it says into a
+// pipeline (a NaN texel renders as black, a misspelt key silently takes its default).
 // docs/file-formats.md lists every warning.
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -103,8 +104,12 @@ int runValidate(const std::vector<std::string>& argv) {
     // validated, so every line names what the user asked about.
     for (const auto& w : warnings)
         std::fprintf(stderr, "wavelit-cli: warning: %s%s\n", w.rfind(path, 0) == 0 ? "" : (path + ": ").c_str(), w.c_str());
-    std::printf("%s: ok: %s%s\n", path.c_str(), summary->c_str(),
-                warnings.empty() ? "" : (", " + std::to_string(warnings.size()) + " warning(s)").c_str());
+    if (!warnings.empty()) {
+        std::fprintf(stderr, "wavelit-cli: %s: invalid: %zu problem(s) that loading would repair (%s)\n",
+                     path.c_str(), warnings.size(), summary->c_str());
+        return 1;
+    }
+    std::printf("%s: ok: %s\n", path.c_str(), summary->c_str());
     return 0;
 }
 
