@@ -23,6 +23,7 @@ constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // pass → seed scrambl
 constexpr float kRayOffset = 1e-4f;                      // × max(1, |hit|): scale-aware epsilon
 constexpr float kMinContinueProbability = 0.05f;         // Russian roulette floor of q's complement
 constexpr int kRussianRouletteDepth = 2;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Tiles: small enough to balance 2–64 threads on tiny test images, big enough to amortise the
 // atomic fetch.
 constexpr int kTileSize = 16;
@@ -73,7 +74,8 @@ CpuPathTracer::CpuPathTracer(std::shared_ptr<const scene::Scene> scene,
     : m_scene(std::move(scene)), m_bvh(std::move(bvh)), m_options(options),
       m_materials(std::move(materials)),
       m_camera(m_scene->camera, options.width, options.height),
-      m_environment(m_scene->lighting.environment), m_threadCount(threadCount),
+      m_environment(m_scene->lighting.environment), m_lights(m_scene->lighting.lights),
+      m_threadCount(threadCount),
       m_sum(size_t(options.width) * size_t(options.height), glm::dvec3(0.0)) {
     m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
 }
@@ -94,31 +96,47 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
     glm::vec3 origin = m_camera.origin();
     glm::vec3 dir = m_camera.direction(x, y, jx, jy);
     glm::vec3 L(0.0f), beta(1.0f);
+    float scatterPdfOfDir = 0.0f; // solid-angle pdf with which the last vertex drew `dir`
     for (int depth = 0;; ++depth) {
         scene::BvhHit hit;
-        if (!scene::intersect(*m_bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit)) {
+        const bool found =
+            scene::intersect(*m_bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit);
+        // Analytic lights crossed before the surface (or the sun, when the ray escapes).
+        if (!m_lights.empty())
+            L += beta * m_lights.emissionAlongRay(origin, dir, found ? hit.t : kInfinity,
+                                                  scatterPdfOfDir, depth == 0, m_lightStrategy);
+        if (!found) {
             L += beta * m_environment.radiance(dir);
             break;
         }
         const SurfacePoint sp = surfaceAt(*m_bvh, hit, origin, dir);
         const ResolvedMaterial& mat = material(sp.materialIndex);
         const glm::vec3& ng = sp.geometric;
-        const glm::vec3 wo = -dir;
+        const util::Frame frame = util::Frame::fromNormal(sp.shading);
+        const glm::vec3 wo = frame.toLocal(-dir);
 
         L += beta * mat.emission;
         if (depth == m_options.bounces) break;
 
-        // Next-event estimation (env and analytic lights, issue 6) goes here, before the BSDF
-        // sample, with MIS weights for the emission the BSDF-sampled ray then finds.
+        // Lights are sampled from the point the continuation ray leaves from, so both MIS
+        // strategies evaluate their pdfs at the same point.
+        const glm::vec3 next =
+            sp.position + ng * (kRayOffset * std::max(1.0f, glm::length(sp.position)));
+        if (!m_lights.empty()) {
+            const float uSelect = rng.nextFloat();
+            const float ul1 = rng.nextFloat();
+            const float ul2 = rng.nextFloat();
+            L += beta * nextEvent(mat, frame, wo, ng, next, uSelect, ul1, ul2);
+        }
 
-        const util::Frame frame = util::Frame::fromNormal(sp.shading);
         const float u1 = rng.nextFloat();
         const float u2 = rng.nextFloat();
-        plugins::BrdfSample s = mat.brdf->sample(mat.params, frame.toLocal(wo), u1, u2);
+        const ScatterDraw s = sampleScatter(mat, wo, u1, u2);
         if (!s.valid || s.pdf <= 0.0f) break;
         const glm::vec3 wi = frame.toWorld(s.wi);
         if (glm::dot(wi, ng) <= 0.0f) break; // below the true surface: light leak otherwise
         beta *= s.f * (s.wi.z / s.pdf);
+        scatterPdfOfDir = s.pdf;
 
         if (depth >= kRussianRouletteDepth) {
             float q = std::max(kMinContinueProbability,
@@ -127,10 +145,44 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
             beta /= 1.0f - q;
         }
 
-        origin = sp.position + ng * (kRayOffset * std::max(1.0f, glm::length(sp.position)));
+        origin = next;
         dir = wi;
     }
     return L;
+}
+
+CpuPathTracer::ScatterDraw CpuPathTracer::sampleScatter(const ResolvedMaterial& mat,
+                                                        const glm::vec3& wo, float u1,
+                                                        float u2) const {
+    const plugins::BrdfSample s = mat.brdf->sample(mat.params, wo, u1, u2);
+    return ScatterDraw{s.wi, s.f, s.pdf, s.valid};
+}
+
+float CpuPathTracer::scatterPdf(const ResolvedMaterial& mat, const glm::vec3& wo,
+                                const glm::vec3& wi) const {
+    return mat.brdf->pdf(mat.params, wo, wi);
+}
+
+glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
+                                   const glm::vec3& wo, const glm::vec3& ng,
+                                   const glm::vec3& origin, float uSelect, float u1,
+                                   float u2) const {
+    const LightSampler& light = m_lights.light(m_lights.select(uSelect));
+    if (m_lightStrategy == LightStrategy::BsdfOnly && !light.isDelta()) return glm::vec3(0.0f);
+    const LightSample ls = light.sample(origin, u1, u2);
+    if (!ls.valid || !(ls.pdf > 0.0f)) return glm::vec3(0.0f);
+    // The BSDF strategy ends paths below the true surface; light sampling must agree.
+    if (glm::dot(ls.wi, ng) <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 wi = frame.toLocal(ls.wi);
+    if (wi.z <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 f = mat.brdf->eval(mat.params, wo, wi);
+    if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    if (scene::occluded(*m_bvh, origin, ls.wi, 0.0f,
+                        std::min(ls.distance, std::numeric_limits<float>::max())))
+        return glm::vec3(0.0f);
+    const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, wo, wi);
+    const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy);
+    return f * ls.value * (wi.z * w / (ls.pdf * m_lights.selectionProbability()));
 }
 
 util::Status CpuPathTracer::renderPass() {

@@ -5,19 +5,23 @@
 // tests, so it favours clarity over speed: one sample per pixel per pass, std::thread workers
 // over 16×16 tiles, accumulation in double.
 //
-// Samplers: only `bsdf` so far; next-event estimation of the environment and analytic lights
-// (`env`, `mis`, `wavelet`, `oracle`; issue 6) plugs in at the marked place in samplePixel.
+// Analytic lights (point, sphere, rect, spot, sun) get next-event estimation at every hit, MIS'd
+// with BSDF sampling (light_set.h; docs/estimator.md "Analytic lights"). Direction samplers: only
+// `bsdf` so far; the env/mis/wavelet/oracle DirectionSampler (issue 6) replaces the BSDF sampling
+// step in sampleScatter/scatterPdf, the one place that draws the next direction.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.
 #pragma once
 
 #include "render/cpu_camera.h"
 #include "render/cpu_environment.h"
 #include "render/integrator.h"
+#include "render/light_set.h"
 #include "render/render_options.h"
 #include "scene/bvh.h"
 #include "scene/scene.h"
 
 #include "plugins/brdf.h"
+#include "util/hemisphere_sampling.h"
 
 #include <glm/vec3.hpp>
 
@@ -49,6 +53,10 @@ public:
 
     int threadCount() const { return m_threadCount; }
 
+    // Test hook: which strategies reach analytic area lights (light_set.h). Renders use Mis; the
+    // three must agree in the mean. Changing it does not reset the accumulation.
+    void setLightStrategy(LightStrategy strategy) { m_lightStrategy = strategy; }
+
 private:
     // A material resolved once: plugin pointer and parameters, so the hot loop does no lookups.
     struct ResolvedMaterial {
@@ -62,12 +70,32 @@ private:
                   int threadCount);
     const ResolvedMaterial& material(float index) const;
 
+    // The BSDF-sampling step (local shading frame, solid-angle pdf). A DirectionSampler with
+    // sample(u1, u2, u3) → {wi, pdf, valid} and pdf(wi) plugs in here: f then comes from eval.
+    struct ScatterDraw {
+        glm::vec3 wi{0.0f, 0.0f, 1.0f};
+        glm::vec3 f{0.0f};
+        float pdf = 0.0f;
+        bool valid = false;
+    };
+    ScatterDraw sampleScatter(const ResolvedMaterial& mat, const glm::vec3& wo, float u1,
+                              float u2) const;
+    float scatterPdf(const ResolvedMaterial& mat, const glm::vec3& wo, const glm::vec3& wi) const;
+    // Next-event estimation from `origin` (the offset hit point the continuation ray leaves from):
+    // one light chosen by uSelect, sampled with (u1, u2), shadow ray, MIS weight. Radiance
+    // toward the viewer, before the path throughput.
+    glm::vec3 nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
+                        const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
+                        float uSelect, float u1, float u2) const;
+
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
     RenderOptions m_options;
     std::vector<ResolvedMaterial> m_materials; // Scene::materials order, + the default at the end
     CpuCamera m_camera;
     CpuEnvironment m_environment;
+    LightSet m_lights;
+    LightStrategy m_lightStrategy = LightStrategy::Mis;
     int m_threadCount;
     std::vector<glm::dvec3> m_sum;
     int m_passes = 0;

@@ -6,7 +6,13 @@
 #include "util/image.h"
 #include "util/result.h"
 
+#include <memory>
 #include <string>
+
+namespace wavelit::scene {
+struct Scene;
+struct Bvh;
+} // namespace wavelit::scene
 
 namespace wavelit::render {
 
@@ -30,6 +36,13 @@ public:
     virtual IntegratorTimings timings() const = 0;
     // Validation messages seen (Vulkan debug callback); always 0 for the CPU tracer.
     virtual int validationMessageCount() const { return 0; }
+    // Replaces scene and BVH (same RenderOptions) keeping devices and compiled pipelines, and
+    // restarts accumulation. The default says Unsupported: RenderSession then recreates the
+    // integrator, which is always correct, only slower.
+    virtual util::Status setScene(std::shared_ptr<const scene::Scene> /*scene*/,
+                                  std::shared_ptr<const scene::Bvh> /*bvh*/) {
+        return util::makeError(util::ErrorKind::Unsupported, "", "setScene not supported");
+    }
 };
 
 } // namespace wavelit::render

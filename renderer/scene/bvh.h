@@ -24,7 +24,9 @@ struct alignas(16) BvhNode {
 static_assert(sizeof(BvhNode) == 32);
 
 // World-space triangle, std430 layout (three vec4s + per-vertex normals as three vec4s).
-// w of v0 carries the material index (into Scene::materials), w of v1 the object index.
+// w of v0 carries the material index (into Scene::materials; materials.size() when the object's
+// material id is unknown: use a default Material{}), w of v1 the object index (into Scene::objects).
+// Normals are world space and unit; a mesh without normals gets the geometric normal.
 struct alignas(16) BvhTriangle {
     float v0[4];
     float v1[4];
@@ -48,7 +50,7 @@ struct BvhHit {
 };
 
 // Builds over every object's mesh transformed to world space. Degenerate (zero-area) triangles
-// are skipped. An empty scene gives a single empty leaf.
+// are skipped. An empty scene gives a single node and no triangles (traversal checks for that).
 Bvh buildBvh(const Scene& scene);
 
 // Closest hit along origin + t * dir for t in (tMin, tMax); false if none.

@@ -1,0 +1,144 @@
+// Direction samplers for environment lighting at a shading point (issue 6; DESIGN.md §4, §5.B):
+// one interface for every `--sampler` kind, so both tracers draw, weight and report the same way.
+//
+//   uniform  uniform hemisphere around the shading normal        pdf 1/(2 pi)
+//   cosine   cosine-weighted hemisphere                           pdf cos/pi
+//   bsdf     the material's BRDF sampler (GGX: visible normals)   the plugin's pdf
+//   env      the environment alone, hierarchical over its octahedral map (rotation applied)
+//   mis      one-sample MIS of bsdf and env, 1/2 each: pdf = (p_bsdf + p_env) / 2, which is the
+//            balance heuristic in the one-sample model (f L cos / sum c_i p_i)
+//   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
+//            refined by the env pyramid, env_product_sampler.h) mixed with bsdf and env sampling
+//            by the per-material policy (env_product_tables.h): pdf = sum c_i p_i, so no
+//            direction with a non-zero integrand has zero pdf. Narrow lobes (policy BsdfOnly),
+//            black environments and all-zero products use bsdf sampling alone.
+//   oracle   a dense 128^2 product of BRDF x cos and the env over a lobe-fitted window at the
+//            exact reflection vector, refined by the env pyramid (oracle_sampler.h): the ideal
+//            the wavelet sampler approximates; 0.9 product + 0.05 bsdf + 0.05 env.
+//
+// Contract for the tracers: build DirectionSamplerTables once per scene (and again after change
+// sets touching the environment or a material; rebuilding is per material, see build()), then per
+// shading point construct a DirectionSampler (the wavelet kind does its per-point product work
+// here: ~1k BRDF evaluations + a 32^2 sparse product) and call sample(u1, u2, u3): u3 picks the
+// technique, u1, u2 drive it. The returned pdf is the mixture's pdf in SOLID ANGLE at the
+// direction drawn: pdf(wi) for BSDF-type draws; for env/product draws the tabulated parts are
+// evaluated at the double-precision direction before rounding to float (pdf(wi) agrees except
+// for the ~1e-7 of draws that rounding moves across a texel edge, where the double value is the
+// right one: a sun texel is 1e6 x denser than its neighbours); the estimator is f(wo, wi) L(wi) cos / pdf
+// (never the paper's eq 7). `valid` is false when no direction was produced (e.g. GGX reflected
+// below the horizon); a valid wi may still lie below the surface, where f = 0.
+// All directions are WORLD space unit vectors. Thread-safety: const methods are thread-safe;
+// one DirectionSampler per shading point per thread.
+#pragma once
+
+#include "plugins/brdf.h"
+#include "render/env_product_sampler.h"
+#include "render/env_product_tables.h"
+#include "render/sampler_environment.h"
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wavelit::render {
+
+enum class SamplerKind { Uniform, Cosine, Bsdf, Env, Mis, Wavelet, Oracle };
+
+const char* samplerKindName(SamplerKind kind);
+std::optional<SamplerKind> parseSamplerKind(std::string_view name);
+std::vector<SamplerKind> allSamplerKinds();
+
+// A material as the samplers need it (scene::Material resolved to its plugin).
+struct SamplerMaterial {
+    std::string name;
+    const plugins::Brdf* brdf = nullptr;
+    plugins::BrdfParams params;
+};
+
+class DirectionSamplerTables {
+public:
+    // Builds the env tables and, for kind Wavelet, the product tables of every material
+    // (materials not in the list get none: list only those the scene uses, DESIGN.md §7).
+    static std::shared_ptr<const DirectionSamplerTables>
+    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
+          const SamplerEnvironmentOptions& envOptions = {});
+
+    SamplerKind kind() const { return m_kind; }
+    const SamplerEnvironment& environment() const { return m_env; }
+    const scene::Environment& sourceEnvironment() const { return m_source; }
+    const SamplerMaterial& material(size_t i) const { return m_materials[i]; }
+    size_t materialCount() const { return m_materials.size(); }
+    // nullptr unless kind == Wavelet.
+    const MaterialProductTables* productTables(size_t i) const;
+    // Multi-line report: env resolution, per-material choice and reason, bytes, build times.
+    std::string report() const;
+
+private:
+    SamplerKind m_kind = SamplerKind::Wavelet;
+    scene::Environment m_source;
+    SamplerEnvironment m_env;
+    std::vector<SamplerMaterial> m_materials;
+    std::vector<MaterialProductTables> m_products;
+};
+
+// The shading configuration: an orthonormal frame (n = shading normal, t, b tangents; the BRDF's
+// local frame is (t, b, n)), the direction toward the viewer, and the material's index in the
+// tables.
+struct ShadingPoint {
+    glm::vec3 n{0.0f, 1.0f, 0.0f}, t{1.0f, 0.0f, 0.0f}, b{0.0f, 0.0f, -1.0f};
+    glm::vec3 wo{0.0f, 1.0f, 0.0f};
+    size_t material = 0;
+};
+
+struct DirectionSample {
+    glm::vec3 wi{0.0f};
+    float pdf = 0.0f; // solid angle
+    bool valid = false;
+};
+
+class DirectionSampler {
+public:
+    // `tables` must outlive the sampler. `kind` may differ from tables.kind() except that
+    // Wavelet needs tables built for Wavelet (others fall back to bsdf + env mixing).
+    DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
+                     const ShadingPoint& point);
+
+    DirectionSample sample(float u1, float u2, float u3) const;
+    float pdf(const glm::vec3& wi) const;
+    double pdfDouble(const glm::vec3& wi) const;
+    // What this sampler does at this point and why (for the render report).
+    std::string describe() const;
+
+    // f(wo, wi) cos(theta_i) as RGB, the BRDF part of the integrand (0 below the surface).
+    glm::vec3 brdfCos(const glm::vec3& wi) const;
+
+private:
+    enum class Technique { Uniform, Cosine, Bsdf, Env, Product };
+    struct Component {
+        Technique technique;
+        double weight;
+    };
+    glm::vec3 toShading(const glm::vec3& w) const;
+    glm::vec3 fromShading(const glm::vec3& w) const;
+    double techniquePdf(Technique t, const glm::vec3& local, const glm::dvec3& envLocal) const;
+    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const;
+    void addProduct(SamplerKind kind);
+    double bsdfLobeIntegral() const;
+    double tailIntegral(const glm::dvec3& axisLocal, double capAngle) const;
+
+    const DirectionSamplerTables* m_tables;
+    SamplerKind m_kind;
+    ShadingPoint m_point;
+    const SamplerMaterial* m_material;
+    glm::vec3 m_woLocal;
+    std::vector<Component> m_components;
+    std::optional<EnvProductSampler> m_product;
+    std::string m_describe;
+};
+
+} // namespace wavelit::render

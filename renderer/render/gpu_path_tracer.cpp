@@ -1,0 +1,272 @@
+#include "render/gpu_path_tracer.h"
+
+#include "render/gpu_scene_data.h"
+#include "render/integrator_factory.h"
+#include "util/log.h"
+#include "util/timer.h"
+#include "vk/buffer.h"
+#include "vk/command_runner.h"
+#include "vk/compute_kernel.h"
+#include "vk/context.h"
+#include "vk/shader_compiler.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#ifndef WAVELIT_SHADER_DIR
+#define WAVELIT_SHADER_DIR "shaders"
+#endif
+#ifndef WAVELIT_PLUGIN_DIR
+#define WAVELIT_PLUGIN_DIR "plugins"
+#endif
+
+namespace wavelit::render {
+namespace {
+
+// Workgroup shape, passed to path_tracer.comp as defines.
+constexpr uint32_t kWorkgroupX = 8;
+constexpr uint32_t kWorkgroupY = 8;
+
+// Binding order of path_tracer.comp.
+enum Binding : uint32_t { kParams, kNodes, kTriangles, kMaterials, kEnvironment, kAccumulation };
+
+struct PassPush {
+    uint32_t seedLo, seedHi;
+};
+
+std::string envOr(const char* name, const char* fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? v : fallback;
+}
+
+class GpuPathTracer final : public Integrator {
+public:
+    static util::Result<std::unique_ptr<Integrator>>
+    create(std::shared_ptr<const scene::Scene> scene, std::shared_ptr<const scene::Bvh> bvh,
+           const RenderOptions& options);
+    util::Status renderPass() override;
+    int samplesPerPixel() const override { return m_passes; }
+    util::Result<util::ImageRGB> image() override;
+    void resetAccumulation() override;
+    std::string deviceName() const override { return "vulkan: " + m_context->deviceName(); }
+    IntegratorTimings timings() const override { return m_timings; }
+    int validationMessageCount() const override { return m_context->validationMessageCount(); }
+    util::Status setScene(std::shared_ptr<const scene::Scene> scene,
+                          std::shared_ptr<const scene::Bvh> bvh) override;
+
+private:
+    GpuPathTracer() = default;
+    util::Result<vk::Buffer> upload(const void* data, size_t bytes, VkBufferUsageFlags usage,
+                                    const std::string& name);
+    // Packs and uploads scene + BVH into fresh buffers, then swaps them in and rebinds: on error
+    // the previous scene stays intact. No dispatch is in flight (renderPass waits).
+    util::Status uploadScene(const scene::Scene& scene, const scene::Bvh& bvh);
+
+    std::shared_ptr<const scene::Scene> m_scene;
+    std::shared_ptr<const scene::Bvh> m_bvh;
+    RenderOptions m_options;
+    // The context is declared first so it is destroyed last; the runner last so its destructor
+    // (which waits for the last submit) runs before any buffer goes away.
+    std::unique_ptr<vk::Context> m_context;
+    vk::Buffer m_params, m_nodes, m_triangles, m_materials, m_environment, m_accumulation;
+    vk::ComputeKernel m_kernel;
+    std::unique_ptr<vk::CommandRunner> m_runner;
+    IntegratorTimings m_timings;
+    int m_passes = 0;
+};
+
+util::Result<vk::Buffer> GpuPathTracer::upload(const void* data, size_t bytes,
+                                               VkBufferUsageFlags usage, const std::string& name) {
+    if (usage == VK_BUFFER_USAGE_STORAGE_BUFFER_BIT &&
+        bytes > m_context->limits().maxStorageBufferRange)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               name + " needs " + std::to_string(bytes) +
+                                   " bytes, more than the device's storage-buffer range of " +
+                                   std::to_string(m_context->limits().maxStorageBufferRange));
+    auto buffer = vk::Buffer::create(*m_context, bytes, usage, name);
+    if (!buffer)
+        return buffer.error();
+    if (data && bytes)
+        buffer->write(data, bytes);
+    return buffer;
+}
+
+util::Result<std::unique_ptr<Integrator>>
+GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
+                      std::shared_ptr<const scene::Bvh> bvh, const RenderOptions& options) {
+    std::unique_ptr<GpuPathTracer> pt(new GpuPathTracer());
+    pt->m_scene = std::move(scene);
+    pt->m_bvh = std::move(bvh);
+    pt->m_options = options;
+    pt->m_timings.bvhBuildSeconds = pt->m_bvh->buildSeconds;
+
+    if (options.sampler != SamplerKind::Bsdf)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               std::string("sampler '") + samplerKindName(options.sampler) +
+                                   "' is not implemented yet on Vulkan (issue 6)");
+    // Fail on an unsupported material before any device work.
+    if (auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options); !packed)
+        return packed.error();
+
+    util::Timer timer;
+    auto ctx = vk::Context::create({options.vulkanDevice, options.validation});
+    if (!ctx)
+        return ctx.error();
+    pt->m_context = std::move(ctx.value());
+    // Instance + device creation is reported apart from the pipeline (it is not shader work).
+    util::logInfo("vulkan device: " + pt->m_context->deviceName() + " (created in " +
+                  std::to_string(int(timer.milliseconds())) + " ms)");
+    timer.restart();
+
+    // Pipeline first: a shader error is the likeliest failure and should not wait for uploads.
+    vk::ShaderCompileOptions compile{{gpuShaderDirectory(), gpuPluginDirectory()},
+                                     {"WAVELIT_WORKGROUP_X=" + std::to_string(kWorkgroupX),
+                                      "WAVELIT_WORKGROUP_Y=" + std::to_string(kWorkgroupY)}};
+    std::string shaderPath =
+        (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
+    auto spirv = vk::compileComputeShaderFile(shaderPath, compile);
+    if (!spirv)
+        return spirv.error();
+    using vk::BindingKind;
+    auto kernel = vk::ComputeKernel::create(
+        *pt->m_context,
+        {"path_tracer",
+         std::move(spirv.value()),
+         {BindingKind::UniformBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer,
+          BindingKind::StorageBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer},
+         sizeof(PassPush)});
+    if (!kernel)
+        return kernel.error();
+    pt->m_kernel = std::move(kernel.value());
+    pt->m_timings.pipelineSeconds = timer.seconds();
+
+    timer.restart();
+    auto accumulation =
+        pt->upload(nullptr, size_t(options.width) * size_t(options.height) * 4 * sizeof(float),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "accumulation");
+    if (!accumulation)
+        return accumulation.error();
+    pt->m_accumulation = std::move(accumulation.value());
+    pt->m_kernel.bind(kAccumulation, pt->m_accumulation);
+    auto uploaded = pt->uploadScene(*pt->m_scene, *pt->m_bvh);
+    if (!uploaded)
+        return uploaded.error();
+    pt->m_accumulation.fill(0);
+    auto runner = vk::CommandRunner::create(*pt->m_context, "path tracer");
+    if (!runner)
+        return runner.error();
+    pt->m_runner = std::move(runner.value());
+    pt->m_timings.uploadSeconds = timer.seconds();
+    return std::unique_ptr<Integrator>(std::move(pt));
+}
+
+util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::Bvh& bvh) {
+    if (!scene.lighting.lights.empty())
+        util::logWarning("Vulkan path tracer: " + std::to_string(scene.lighting.lights.size()) +
+                         " analytic light(s) not rendered yet (issue 6); environment and "
+                         "emissive surfaces only");
+    auto packed = packGpuScene(scene, bvh, m_options);
+    if (!packed)
+        return packed.error();
+    const GpuSceneData& d = *packed;
+    constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    struct Upload {
+        uint32_t binding;
+        vk::Buffer* target;
+        const void* data;
+        size_t bytes;
+        VkBufferUsageFlags usage;
+        const char* name;
+    } uploads[] = {
+        {kParams, &m_params, &d.params, sizeof(d.params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+         "params"},
+        {kNodes, &m_nodes, bvh.nodes.data(), bvh.nodes.size() * sizeof(scene::BvhNode), kStorage,
+         "bvh nodes"},
+        {kTriangles, &m_triangles, bvh.triangles.data(),
+         bvh.triangles.size() * sizeof(scene::BvhTriangle), kStorage, "bvh triangles"},
+        {kMaterials, &m_materials, d.materials.data(), d.materials.size() * sizeof(GpuMaterial),
+         kStorage, "materials"},
+        {kEnvironment, &m_environment, d.envTexels.data(), d.envTexels.size() * sizeof(float),
+         kStorage, "environment"},
+    };
+    std::vector<vk::Buffer> fresh;
+    for (const Upload& u : uploads) {
+        auto buffer = upload(u.data, u.bytes, u.usage, u.name);
+        if (!buffer)
+            return buffer.error();
+        fresh.push_back(std::move(buffer.value()));
+    }
+    for (size_t i = 0; i < fresh.size(); ++i) {
+        *uploads[i].target = std::move(fresh[i]);
+        m_kernel.bind(uploads[i].binding, *uploads[i].target);
+    }
+    return util::okStatus();
+}
+
+util::Status GpuPathTracer::setScene(std::shared_ptr<const scene::Scene> scene,
+                                     std::shared_ptr<const scene::Bvh> bvh) {
+    util::Timer timer;
+    auto status = uploadScene(*scene, *bvh);
+    if (!status)
+        return status;
+    m_scene = std::move(scene);
+    m_bvh = std::move(bvh);
+    m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
+    m_timings.uploadSeconds = timer.seconds();
+    resetAccumulation();
+    return util::okStatus();
+}
+
+util::Status GpuPathTracer::renderPass() {
+    util::Timer timer;
+    uint64_t seed = gpuPassSeed(m_options.seed, m_passes);
+    PassPush push{uint32_t(seed), uint32_t(seed >> 32)};
+    uint32_t gx = (uint32_t(m_options.width) + kWorkgroupX - 1) / kWorkgroupX;
+    uint32_t gy = (uint32_t(m_options.height) + kWorkgroupY - 1) / kWorkgroupY;
+    auto status = m_runner->run([&](VkCommandBuffer cmd) {
+        m_kernel.dispatch(cmd, gx, gy, 1, &push);
+        vk::computeToComputeAndHostBarrier(cmd);
+    });
+    if (!status)
+        return status;
+    ++m_passes;
+    m_timings.passSeconds += timer.seconds();
+    return util::okStatus();
+}
+
+util::Result<util::ImageRGB> GpuPathTracer::image() {
+    util::ImageRGB img(m_options.width, m_options.height);
+    if (m_passes == 0)
+        return img;
+    std::vector<float> sums(img.pixels.size() * 4);
+    m_accumulation.read(sums.data(), sums.size() * sizeof(float));
+    float inv = 1.0f / float(m_passes);
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        img.pixels[i] = glm::vec3(sums[4 * i], sums[4 * i + 1], sums[4 * i + 2]) * inv;
+    return img;
+}
+
+void GpuPathTracer::resetAccumulation() {
+    // renderPass waits for its fence, so no dispatch is in flight here.
+    m_accumulation.fill(0);
+    m_passes = 0;
+    m_timings.passSeconds = 0.0;
+}
+
+} // namespace
+
+std::string gpuShaderDirectory() {
+    return envOr("WAVELIT_SHADER_DIR", WAVELIT_SHADER_DIR);
+}
+std::string gpuPluginDirectory() {
+    return envOr("WAVELIT_PLUGIN_DIR", WAVELIT_PLUGIN_DIR);
+}
+
+util::Result<std::unique_ptr<Integrator>>
+createGpuPathTracer(std::shared_ptr<const scene::Scene> scene,
+                    std::shared_ptr<const scene::Bvh> bvh, const RenderOptions& options) {
+    return GpuPathTracer::create(std::move(scene), std::move(bvh), options);
+}
+
+} // namespace wavelit::render

@@ -1,0 +1,71 @@
+// SamplerEnvironment: the environment as the direction samplers of issue 6 see it, built once per
+// environment (rebuilt on env change sets: image, rotation, intensity, tint).
+//
+// Holds, in the ENV-LOCAL frame (world rotated by -yaw about +Y, exactly as CpuEnvironment does
+// before its equirect lookup, docs/estimator.md "Environment"):
+//  - the luminance of the radiance resampled onto the equal-area octahedral map at level N
+//    (energy-preserving splat, wavelet/equirect_resample.h), N = ceil(log2(height)) + 1 capped at
+//    `maxLevel`: one octahedral texel is then at most about one equirect texel near the equator;
+//  - its mip pyramid of cell averages (what product windows read as the env factor);
+//  - a HierarchicalSampler over it: the `env` technique and the fine pyramid that product
+//    samplers descend into below their own leaves (DESIGN.md §4.1, item 1).
+// Rotation is an isometry, so solid-angle pdfs are the same in both frames.
+// Measures: pdfLocal is per unit SOLID ANGLE (square pdf / 4 pi, the octahedral Jacobian).
+// Immutable after build; const methods are thread-safe.
+#pragma once
+
+#include "scene/scene.h"
+#include "wavelet/cap_map.h"
+#include "wavelet/hierarchical_sampler.h"
+#include "wavelet/sphere_map.h"
+#include "wavelet/square_grid.h"
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace wavelit::render {
+
+struct SamplerEnvironmentOptions {
+    int maxLevel = 10; // 1024^2 octahedral texels: finer costs memory the samplers cannot use
+    int minLevel = 4;
+};
+
+class SamplerEnvironment {
+public:
+    static SamplerEnvironment build(const scene::Environment& env,
+                                    const SamplerEnvironmentOptions& options = {});
+
+    int level() const { return m_level; }
+    // False for an all-black environment: no env technique, products fall back to the BSDF.
+    bool hasLight() const { return m_fine.has_value(); }
+    const wavelet::HierarchicalSampler& fine() const { return *m_fine; }
+    const wavelet::OctahedralMap& map() const { return m_map; }
+
+    // Average luminance over octahedral cell (l, x, y); l > level() reads the containing texel.
+    double cellAverage(int l, int x, int y) const;
+
+    glm::dvec3 toLocal(const glm::dvec3& world) const;
+    glm::dvec3 toWorld(const glm::dvec3& local) const;
+
+    // The env technique in env-local directions.
+    wavelet::DirectionSample sampleLocal(glm::dvec2 u) const;
+    double pdfLocal(const glm::dvec3& local) const;
+
+    size_t bytes() const; // sampling tables + pyramid
+    double buildSeconds() const { return m_buildSeconds; }
+
+private:
+    wavelet::OctahedralMap m_map;
+    int m_level = 0;
+    std::vector<wavelet::SquareGrid> m_mips; // m_mips[l]: 2^l x 2^l averages
+    std::optional<wavelet::HierarchicalSampler> m_fine;
+    double m_cosYaw = 1.0, m_sinYaw = 0.0;
+    double m_buildSeconds = 0.0;
+};
+
+// Octahedral square point of a direction, clamped into [0, 1)^2 (the last texel owns the edge).
+glm::dvec2 octSquarePoint(const wavelet::OctahedralMap& map, const glm::dvec3& d);
+
+} // namespace wavelit::render

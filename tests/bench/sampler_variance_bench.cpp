@@ -1,0 +1,178 @@
+// Deterministic variance study of the direction samplers (issue 6; DESIGN.md §4.1's study):
+// one shading point (GGX, F0 0.9, view 45 degrees, normal +Y), no visibility, and for each
+// sampler the EXACT per-sample variance of the estimator g/p, g = luminance(f L cos), computed on
+// the environment's own texels (render/sampler_integrals.h): Var = integral g^2/p - I^2.
+// Environments: a synthetic sky with a 0.53-degree sun at 1e5 x the sky mean, 12 degrees from the
+// reflection vector (1024 x 512), and the bundled city / courtyard maps box-filtered to 512 x 256.
+// Prints markdown tables (relative variance Var / I^2 per sampler and roughness, the wavelet /
+// oracle ratio — our efficiency figure — and mis / wavelet), plus table build and per-point
+// construction times. docs/sampler-variance.md holds a run's output. Plain main: no timing is
+// asserted anywhere (DESIGN.md §8).
+#include "render/direction_sampler.h"
+#include "render/sampler_integrals.h"
+#include "render/sampler_test_envs.h"
+#include "util/timer.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace wavelit;
+using namespace wavelit::render;
+
+namespace {
+
+constexpr double kRoughness[] = {0.02, 0.05, 0.1, 0.2, 0.5, 1.0};
+constexpr double kSunRatio = 1e5;
+constexpr double kSunOffsetDeg = 12.0;
+
+struct Study {
+    std::string name;
+    scene::Environment env;
+};
+
+glm::vec3 rotateAboutZ(glm::vec3 v, double deg) {
+    const double a = deg * 3.14159265358979323846 / 180.0;
+    return {float(std::cos(a) * v.x - std::sin(a) * v.y), float(std::sin(a) * v.x + std::cos(a) * v.y),
+            v.z};
+}
+
+void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool includeLambert) {
+    const glm::vec3 n(0, 1, 0), t(1, 0, 0), b(0, 0, -1);
+    const float s45 = std::sqrt(0.5f);
+    const glm::vec3 wo(s45, s45, 0.0f);
+    const glm::vec3 reflection(-s45, s45, 0.0f);
+
+    std::vector<SamplerMaterial> materials;
+    for (double r : kRoughness) {
+        char name[32];
+        std::snprintf(name, sizeof name, "ggx r=%.2f", r);
+        materials.push_back({name, plugins::findBrdf("ggx"), {glm::vec3(0.9f), float(r)}});
+    }
+    if (includeLambert)
+        materials.push_back({"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}});
+
+    util::Timer timer;
+    auto wavelet = DirectionSamplerTables::build(study.env, materials, SamplerKind::Wavelet);
+    std::printf("\n### %s\n\nTables: %.0f ms in all.\n```\n%s```\n\n", study.name.c_str(),
+                timer.milliseconds(), wavelet->report().c_str());
+
+    std::printf("| material |");
+    for (SamplerKind k : kinds)
+        std::printf(" %s |", samplerKindName(k));
+    std::printf(" wavelet/oracle | mis/wavelet | bsdf/wavelet |\n|---|");
+    for (size_t i = 0; i < kinds.size() + 3; ++i)
+        std::printf("---|");
+    std::printf("\n");
+    std::vector<std::string> timings;
+    for (size_t mi = 0; mi < materials.size(); ++mi) {
+        const bool lambert = mi >= std::size(kRoughness);
+        const double r = lambert ? 1.0 : kRoughness[mi];
+        const ShadingPoint point{n, t, b, wo, mi};
+        DenseIntegrandOptions options;
+        if (r < 0.3) { // narrow lobes: finer cells near the reflection vector
+            options.hotSpots = {reflection};
+            options.hotRadius = 8.0 * r * r + 0.01;
+        }
+        const DirectionSampler reference(*wavelet, SamplerKind::Bsdf, point);
+        const DenseIntegrand integrand(
+            study.env, [&](const glm::vec3& w) { return reference.brdfCos(w); }, options);
+        const double i2 = integrand.integral() * integrand.integral();
+        std::printf("| %s |", materials[mi].name.c_str());
+        double vWavelet = 0, vOracle = 0, vMis = 0, vBsdf = 0;
+        std::string timing = materials[mi].name + ":";
+        for (SamplerKind k : kinds) {
+            util::Timer build;
+            const DirectionSampler sampler(*wavelet, k, point);
+            const double buildUs = build.seconds() * 1e6;
+            util::Timer draw;
+            float sink = 0.0f;
+            constexpr int kDraws = 2000;
+            for (int s = 0; s < kDraws; ++s)
+                sink += sampler.sample((s * 0.618034f) - std::floor(s * 0.618034f),
+                                       (s + 0.5f) / kDraws, float((s * 7919) % kDraws) / kDraws)
+                            .pdf;
+            const double drawUs = draw.seconds() * 1e6 / kDraws + (sink < 0 ? 1 : 0);
+            char tbuf[96];
+            std::snprintf(tbuf, sizeof tbuf, " %s %.0f+%.2f us", samplerKindName(k), buildUs,
+                          drawUs);
+            timing += tbuf;
+            util::Timer momentsTimer;
+            const EstimatorMoments m =
+                integrand.moments([&](const glm::vec3& w) { return sampler.pdfDouble(w); });
+            std::fprintf(stderr, "%s %s: moments %.2f s over %zu points\n",
+                         materials[mi].name.c_str(), samplerKindName(k), momentsTimer.seconds(),
+                         integrand.pointCount());
+            const double rel = m.variance() / i2;
+            std::printf(" %.3g |", rel);
+            if (k == SamplerKind::Wavelet) vWavelet = rel;
+            if (k == SamplerKind::Oracle) vOracle = rel;
+            if (k == SamplerKind::Mis) vMis = rel;
+            if (k == SamplerKind::Bsdf) vBsdf = rel;
+        }
+        std::printf(" %.2f | %.2f | %.2f |\n", vWavelet / vOracle, vMis / vWavelet,
+                    vBsdf / vWavelet);
+        std::fflush(stdout);
+        timings.push_back(timing);
+    }
+    std::printf("\nPer shading point: construction + per-sample time (this machine, noisy):\n");
+    for (const std::string& s : timings)
+        std::printf("- %s\n", s.c_str());
+}
+
+// The bench target has no WAVELIT_RESOURCE_DIR definition: $WAVELIT_RESOURCE_DIR, else the
+// source tree's resources/ next to this file.
+std::string resourceDir() {
+    if (const char* dir = std::getenv("WAVELIT_RESOURCE_DIR"))
+        return dir;
+    std::string file = __FILE__;
+    return file.substr(0, file.rfind('/')) + "/../../resources";
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<SamplerKind> kinds = allSamplerKinds();
+    bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    std::vector<Study> studies;
+    const float s45 = std::sqrt(0.5f);
+    const glm::vec3 sun = rotateAboutZ(glm::vec3(-s45, s45, 0.0f), -kSunOffsetDeg);
+    studies.push_back({"sky + 0.53 deg sun at 1e5 x sky mean, 12 deg from the reflection vector",
+                       makeSunSkyEnvironment(quick ? 512 : 1024, sun, kSunRatio)});
+    if (!quick)
+        for (const char* name : {"city", "courtyard"}) {
+            auto env = loadDownsampledEnvironment(
+                resourceDir() + "/envmaps/" + name + ".exr", 512);
+            if (!env) {
+                std::fprintf(stderr, "%s\n", env.error().message().c_str());
+                return 1;
+            }
+            studies.push_back({std::string(name) + ".exr (512 wide)", *env});
+        }
+    if (argc > 1 && std::strcmp(argv[1], "--debug-env") == 0) {
+        const SamplerEnvironment env = SamplerEnvironment::build(studies[0].env);
+        const DenseIntegrand integrand(studies[0].env, [](const glm::vec3& w) { return glm::vec3(w.y > 0 ? w.y : 0.0f); });
+        int zeros = 0;
+        integrand.moments([&](const glm::vec3& w) {
+            double p = env.pdfLocal(env.toLocal(glm::dvec3(w)));
+            if (p <= 0 && zeros++ < 10) {
+                glm::dvec2 q = octSquarePoint(env.map(), env.toLocal(glm::dvec3(w)));
+                std::printf("zero pdf at %f %f %f sq %.9f %.9f avg %g\n", w.x, w.y, w.z, q.x, q.y,
+                            env.cellAverage(env.level(), int(q.x * (1 << env.level())), int(q.y * (1 << env.level()))));
+            }
+            return p;
+        });
+        std::printf("zeros %d\n", zeros);
+        return 0;
+    }
+    std::printf("# Sampler variance study\n\nRelative per-sample variance Var/I^2 of g/p (exact, "
+                "dense grid); lower is better.\n");
+    for (const Study& s : studies)
+        runStudy(s, kinds, true);
+    return 0;
+}

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# `wavelit-cli render` contract (DESIGN.md §6): exit 0 and files written for .exr/.png with a
+# JSON report; exit 2 on bad usage; exit 1 naming the file for a missing or corrupt scene, mesh
+# or environment map. Renders are tiny (32x32, 2 spp) because lavapipe shares the CPU.
+# Usage: bash cli_render_test.sh <wavelit-cli> <source-dir>
+set -u
+cli="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+export WAVELIT_VK_VALIDATION=1
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect CODE NEEDLE -- ARGS...: runs the CLI, checks the exit code and that stderr names NEEDLE.
+expect() {
+    local code="$1" needle="$2"
+    shift 3
+    "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
+    local rc=$?
+    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $(cat "$tmp/err")"
+    if [ -n "$needle" ] && ! grep -qF -- "$needle" "$tmp/err"; then
+        fail "'$*' did not mention '$needle': $(cat "$tmp/err")"
+    fi
+}
+
+# A private copy of the default scene's tree, so files can be broken one at a time.
+copy_tree() {
+    local dst="$1"
+    mkdir -p "$dst"
+    cp -r "$src/resources/scenes" "$src/resources/meshes" "$src/resources/lighting" "$dst/"
+    mkdir -p "$dst/envmaps"
+    cp "$src/resources/envmaps/studio.exr" "$dst/envmaps/"
+}
+copy_tree "$tmp/good"
+scene="$tmp/good/scenes/ring_on_ground.wlscene"
+small=(--width 32 --height 32 --spp 2 --device vulkan)
+
+# Success: EXR, PNG and a report.
+expect 0 "" -- render "$scene" -o "$tmp/out.exr" "${small[@]}" --report "$tmp/report.json"
+[ -s "$tmp/out.exr" ] || fail "no EXR written"
+grep -qF "$tmp/out.exr" "$tmp/out" || fail "stdout does not say where the EXR went: $(cat "$tmp/out")"
+grep -q '"spp": 2' "$tmp/report.json" || fail "report lacks spp: $(cat "$tmp/report.json")"
+grep -q '"validationMessages": 0' "$tmp/report.json" || fail "validation messages: $(cat "$tmp/report.json")"
+grep -q '"pipelineSeconds"' "$tmp/report.json" || fail "report lacks timings"
+expect 0 "" -- render "$scene" -o "$tmp/out.png" "${small[@]}" --seed 5 --bounces 2
+[ -s "$tmp/out.png" ] || fail "no PNG written"
+head -c 8 "$tmp/out.png" | od -An -tx1 | grep -q "89 50 4e 47" || fail "PNG signature missing"
+expect 0 "" -- render "$scene" -o "$tmp/timed.exr" --width 16 --height 16 --time 0.2
+[ -s "$tmp/timed.exr" ] || fail "--time render wrote nothing"
+
+# Bad usage: exit 2.
+expect 2 "--bogus" -- render "$scene" -o "$tmp/x.exr" --bogus 1
+expect 2 "" -- render "$scene"
+expect 2 ".jpg" -- render "$scene" -o "$tmp/x.jpg"
+expect 2 "--spp" -- render "$scene" -o "$tmp/x.exr" --spp zero
+expect 2 "--device" -- render "$scene" -o "$tmp/x.exr" --device gpu
+expect 2 "--sampler" -- render "$scene" -o "$tmp/x.exr" --sampler nope
+
+# Valid sampler names not on Vulkan yet: exit 1 with the issue that brings them.
+expect 1 "issue 6" -- render "$scene" -o "$tmp/x.exr" --sampler wavelet --device vulkan
+
+# Bad input: exit 1 naming the file.
+expect 1 "missing.wlscene" -- render "$tmp/missing.wlscene" -o "$tmp/x.exr" "${small[@]}"
+echo '{ "format": "wavelit-scene", "version": 1, ' >"$tmp/corrupt.wlscene"
+expect 1 "corrupt.wlscene" -- render "$tmp/corrupt.wlscene" -o "$tmp/x.exr" "${small[@]}"
+
+copy_tree "$tmp/nomesh"
+rm "$tmp/nomesh/meshes/torus.obj"
+expect 1 "torus.obj" -- render "$tmp/nomesh/scenes/ring_on_ground.wlscene" -o "$tmp/x.exr" "${small[@]}"
+
+copy_tree "$tmp/badexr"
+head -c 300 "$src/resources/envmaps/studio.exr" >"$tmp/badexr/envmaps/studio.exr"
+expect 1 "studio.exr" -- render "$tmp/badexr/scenes/ring_on_ground.wlscene" -o "$tmp/x.exr" "${small[@]}"
+[ ! -e "$tmp/x.exr" ] || fail "a failed render wrote $tmp/x.exr"
+
+if [ "$failures" -gt 0 ]; then
+    echo "$failures failure(s)"
+    exit 1
+fi
+echo "cli render: all checks passed"
