@@ -17,5 +17,9 @@ build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr
     --spp "${WAVELIT_SPP:-64}" --report out/ring_on_ground_report.json "$@"
 build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.png \
     --spp "${WAVELIT_SPP:-64}" "$@" >/dev/null
+# Speed vs error: every sampler at equal time against a longer reference (RMSE curves).
+build/release/renderer/cli/wavelit-cli bench "$scene" --time "${WAVELIT_BENCH_SECONDS:-3}" \
+    --width 128 --height 128 --out out/bench
 echo "run: images at $(pwd)/out/ring_on_ground.exr and $(pwd)/out/ring_on_ground.png"
-echo "run: report at $(pwd)/out/ring_on_ground_report.json"
+echo "run: render report at $(pwd)/out/ring_on_ground_report.json"
+echo "run: speed/error report at $(pwd)/out/bench/bench.{json,csv,png}"
