@@ -11,6 +11,7 @@
 #include "scene/atomic_file.h"
 #include "scene/image_io.h"
 #include "scene/scene_io.h"
+#include "util/path_util.h"
 #include "util/log.h"
 #include "util/timer.h"
 
@@ -88,12 +89,7 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
     return j.str();
 }
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
+using util::lowerExtension;
 
 int run(const std::vector<std::string>& argv) {
     std::set<std::string> flags = renderValueFlags();

@@ -11,6 +11,7 @@
 #include "scene/image_io.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene_io.h"
+#include "util/path_util.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,11 +30,7 @@ using util::makeError;
 // export.
 constexpr int kMinImageSide = 2;
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
+using util::lowerExtension;
 
 std::string sceneSummary(const scene::Scene& s) {
     size_t triangles = 0;

@@ -1,12 +1,15 @@
 #include "scene/image_io.h"
 
+#include "scene/atomic_file.h"
 #include "scene/radiance_hdr.h"
+#include "util/path_util.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <Iex.h>
 #include <zlib.h>
 
@@ -16,7 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
+#include <sstream>
 
 namespace wavelit::scene {
 
@@ -25,11 +28,7 @@ using util::makeError;
 
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
+using util::lowerExtension;
 
 util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) {
     try {
@@ -101,35 +100,6 @@ util::Status sanitize(LoadedImage& loaded, const std::string& path, bool fix) {
     return util::okStatus();
 }
 
-// Writes through a temporary file in the destination folder and renames it into place, so a
-// failed write never leaves a truncated image where a good one was.
-template <typename WriteFn> util::Status writeAtomically(const std::string& path, WriteFn&& write) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::string tmpName = ".";
-    tmpName += target.filename().string();
-    tmpName += ".tmp";
-    tmpName += std::to_string(::getpid());
-    const fs::path tmp = target.parent_path() / tmpName;
-    util::Status written = write(tmp.string());
-    if (!written.ok()) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        return makeError(written.error().kind, path, written.error().reason);
-    }
-    if (FILE* f = std::fopen(tmp.c_str(), "rb")) {
-        ::fsync(fileno(f));
-        std::fclose(f);
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        return makeError(ErrorKind::Io, path, "cannot rename temporary file into place: " + ec.message());
-    }
-    return util::okStatus();
-}
-
 void appendBigEndian(std::string& out, uint32_t v) {
     out.push_back(char(v >> 24));
     out.push_back(char(v >> 16));
@@ -171,14 +141,17 @@ util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOpti
 
 util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
     if (image.empty()) return makeError(ErrorKind::Invalid, path, "cannot write an empty image");
-    return writeAtomically(path, [&](const std::string& tmp) -> util::Status {
-        try {
-            Imf::Header header(image.width, image.height);
-            header.compression() = Imf::ZIP_COMPRESSION;
-            header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-            header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-            header.channels().insert("B", Imf::Channel(Imf::FLOAT));
-            Imf::OutputFile file(tmp.c_str(), header);
+    // Encode in memory, then replace the file atomically (scene/atomic_file.h): a failed write
+    // never leaves a truncated image where a good one was.
+    try {
+        Imf::StdOSStream stream;
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        header.channels().insert("G", Imf::Channel(Imf::FLOAT));
+        header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+        {
+            Imf::OutputFile file(stream, header);
             char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
             const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
             Imf::FrameBuffer fb;
@@ -187,11 +160,11 @@ util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
             fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
             file.setFrameBuffer(fb);
             file.writePixels(image.height);
-        } catch (const std::exception& e) {
-            return makeError(ErrorKind::Io, tmp, std::string("cannot write EXR: ") + e.what());
         }
-        return util::okStatus();
-    });
+        return writeFileAtomic(path, stream.str());
+    } catch (const std::exception& e) {
+        return makeError(ErrorKind::Io, path, std::string("cannot encode EXR: ") + e.what());
+    }
 }
 
 util::Status writePng(const std::string& path, const util::ImageRGB& image, float exposureEv) {
@@ -223,13 +196,7 @@ util::Status writePng(const std::string& path, const util::ImageRGB& image, floa
     appendChunk(png, "IDAT", compressed);
     appendChunk(png, "IEND", "");
 
-    return writeAtomically(path, [&](const std::string& tmp) -> util::Status {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(png.data(), std::streamsize(png.size()));
-        out.flush();
-        if (!out) return makeError(ErrorKind::Io, tmp, "cannot write PNG");
-        return util::okStatus();
-    });
+    return writeFileAtomic(path, png);
 }
 
 util::Status writeImage(const std::string& path, const util::ImageRGB& image, float exposureEv) {

@@ -13,6 +13,7 @@
 #include "scene/property_json.h"
 #include "scene/scene_migration.h"
 #include "scene/scene_validation.h"
+#include "util/path_util.h"
 
 #include <filesystem>
 #include <fstream>
@@ -58,11 +59,7 @@ std::string relativeTo(const std::string& file, const fs::path& folder) {
     return fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal()).generic_string();
 }
 
-std::string lowerExtension(const fs::path& p) {
-    std::string ext = p.extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
+using util::lowerExtension;
 
 util::Result<std::string> readName(const Json& doc, const JsonPlace& at) {
     auto it = doc.find("name");
