@@ -36,6 +36,7 @@ struct SamplerRun {
     int samplesPerPixel = 0;
     double seconds = 0.0;
     std::vector<CurvePoint> points;
+    std::vector<int> pointSpp; // samples per pixel at each point
 };
 
 util::Result<std::vector<std::string>> splitSamplers(const std::string& list) {
@@ -147,6 +148,7 @@ int runBench(const std::vector<std::string>& argv) {
             auto img = (*session)->image();
             if (!img) return img.error();
             run.points.push_back({t, render::rmse(*img, reference)});
+            run.pointSpp.push_back(spp);
             run.samplesPerPixel = spp;
             run.seconds = t;
             return util::okStatus();
@@ -174,13 +176,12 @@ int runBench(const std::vector<std::string>& argv) {
             j["spp"] = run.samplesPerPixel;
             j["seconds"] = run.seconds;
             j["final_rmse"] = run.points.empty() ? 0.0 : run.points.back().error;
-            int spp = 1;
-            for (const auto& p : run.points) {
-                j["curve"].push_back({{"seconds", p.seconds}, {"rmse", p.error}});
+            for (size_t k = 0; k < run.points.size(); ++k) {
+                const CurvePoint& p = run.points[k];
+                j["curve"].push_back({{"seconds", p.seconds}, {"spp", run.pointSpp[k]}, {"rmse", p.error}});
                 std::ostringstream line;
-                line << run.name << ',' << p.seconds << ',' << spp << ',' << p.error << '\n';
+                line << run.name << ',' << p.seconds << ',' << run.pointSpp[k] << ',' << p.error << '\n';
                 csv += line.str();
-                spp *= 2;
             }
             curves.push_back({run.name, curveColor(run.name), run.points});
         }

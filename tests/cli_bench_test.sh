@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# `wavelit-cli bench` contract (DESIGN.md §6): writes bench.json/csv/png and one EXR per sampler
+# that ran; RMSE against the reference falls as samples accumulate (Monte Carlo: ~1/sqrt(spp));
+# exit 2 on bad usage, 1 naming a missing scene or a reference of the wrong size. Tiny renders.
+# Usage: bash cli_bench_test.sh <wavelit-cli> <source-dir>
+set -u
+cli="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+export WAVELIT_VK_VALIDATION=1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+scene="$src/resources/scenes/glossy_sphere.wlscene"
+
+"$cli" bench "$scene" --samplers bsdf --time 0.3 --width 24 --height 24 --out "$tmp/b" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+[ "$rc" -eq 0 ] || fail "bench exited $rc: $(cat "$tmp/err")"
+for f in bench.json bench.csv bench.png bsdf.exr reference.exr; do
+    [ -s "$tmp/b/$f" ] || fail "bench did not write $f"
+done
+# The first checkpoint (1 spp) must have a larger RMSE than the last one.
+if [ -s "$tmp/b/bench.csv" ]; then
+    first=$(awk -F, 'NR == 2 {print $4}' "$tmp/b/bench.csv")
+    last=$(tail -n 1 "$tmp/b/bench.csv" | awk -F, '{print $4}')
+    awk -v a="$first" -v b="$last" 'BEGIN { exit !(a > b && b > 0) }' ||
+        fail "RMSE did not fall: first $first, last $last"
+    "$cli" validate "$tmp/b/bsdf.exr" >/dev/null 2>&1 || fail "bsdf.exr does not validate"
+fi
+
+"$cli" bench "$scene" --time 0.1 >/dev/null 2>&1
+[ $? -eq 2 ] || fail "bench without --out should exit 2"
+"$cli" bench "$scene" --samplers bogus --out "$tmp/c" >/dev/null 2>&1
+[ $? -eq 2 ] || fail "unknown sampler should exit 2"
+"$cli" bench "$tmp/none.wlscene" --out "$tmp/d" >/dev/null 2>"$tmp/err"
+[ $? -eq 1 ] && grep -qF none.wlscene "$tmp/err" || fail "missing scene should exit 1 naming it"
+"$cli" bench "$scene" --reference "$tmp/b/bsdf.exr" --width 16 --height 16 --samplers bsdf --time 0.1 \
+    --out "$tmp/e" >/dev/null 2>"$tmp/err"
+[ $? -eq 1 ] && grep -qF "24x24" "$tmp/err" || fail "wrong-size reference should exit 1: $(cat "$tmp/err")"
+
+if [ "$failures" -eq 0 ]; then echo "cli_bench_test: all checks passed"; exit 0; fi
+echo "cli_bench_test: $failures failure(s)"; exit 1
