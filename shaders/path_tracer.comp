@@ -1,7 +1,8 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/cpu_path_tracer.cpp within noise.
-// Plain BSDF sampling for now; the wavelet product samplers of issue 6 plug in at the marked spot.
+// BSDF sampling plus next-event estimation of the analytic lights with MIS (common/lights.glsl);
+// the wavelet product samplers of issue 6 plug in at the marked spot.
 //
 // Buffers follow the layouts of renderer/scene/bvh.h and renderer/render/gpu_scene_data.h.
 #version 460
@@ -23,7 +24,8 @@ layout(std140, binding = 0) uniform Params {
     vec4 envScale;     // rgb = intensity * tint
     vec4 envRotation;  // x = cos yaw, y = sin yaw
     uvec4 size;        // width, height, bounces, triangle count
-    uvec4 envSize;     // env width, env height (0 = constant), material count, unused
+    uvec4 envSize;     // env width, env height (0 = constant), material count, light count
+    vec4 lightInfo;    // x = light selection probability 1/n (computed on the CPU, as LightSet)
 } params;
 
 layout(push_constant) uniform Pass {
@@ -55,6 +57,9 @@ layout(std430, binding = 3) readonly buffer Materials { Material materials[]; };
 layout(std430, binding = 4) readonly buffer Environment { float envTexels[]; };
 layout(std430, binding = 5) buffer Accumulation { vec4 accumulation[]; };
 
+#include "common/lights.glsl"
+layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
+
 #include "common/rng.glsl"
 #include "common/camera.glsl"
 #include "common/environment.glsl"
@@ -67,6 +72,43 @@ const int kRussianRouletteDepth = 2;
 
 vec3 envRadiance(vec3 dir) {
     return environmentRadiance(dir, params.envScale.rgb, params.envRotation.xy, params.envSize.xy);
+}
+
+// LightSet::emissionAlongRay with the Mis strategy: every light crossed before the surface hit
+// (tMax) or, when the ray escaped, also the sun; weight 1 for camera rays.
+vec3 emissionAlongRay(vec3 origin, vec3 dir, float tMax, bool escaped, float bsdfPdf,
+                      bool cameraRay, uint lightCount, float selection) {
+    vec3 sum = vec3(0.0);
+    for (uint k = 0u; k < lightCount; ++k) {
+        Light l = analyticLights[k];
+        float t;
+        if (!lightEvalHit(l, origin, dir, tMax, escaped, t)) continue;
+        float w = 1.0;
+        if (!cameraRay) w = powerHeuristic(bsdfPdf, selection * lightPdf(l, origin, dir));
+        sum += w * l.emissionArea.rgb;
+    }
+    return sum;
+}
+
+// CpuPathTracer::nextEvent with the Mis strategy, from the continuation-ray origin o.
+vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo, vec3 ng, vec3 o,
+               float uSelect, float u1, float u2, uint lightCount, float selection,
+               uint triangleCount) {
+    Light l = analyticLights[min(uint(uSelect * float(lightCount)), lightCount - 1u)];
+    LightSample ls = lightSample(l, o, u1, u2);
+    if (!ls.valid || !(ls.pdf > 0.0)) return vec3(0.0);
+    if (dot(ls.wi, ng) <= 0.0) return vec3(0.0);
+    vec3 wi = frameToLocal(frame, ls.wi);
+    if (wi.z <= 0.0) return vec3(0.0);
+    vec3 f = brdfEval(type, baseColor, roughness, wo, wi);
+    if (all(equal(f, vec3(0.0)))) return vec3(0.0);
+    uint tri;
+    float t, b1, b2;
+    if (bvhTrace(o, ls.wi, 0.0, ls.distance, true, triangleCount, tri, t, b1, b2))
+        return vec3(0.0);
+    float bsdfPdf = ls.delta ? 0.0 : brdfPdf(type, roughness, wo, wi);
+    float w = ls.delta ? 1.0 : powerHeuristic(selection * ls.pdf, bsdfPdf);
+    return f * ls.value * (wi.z * w / (ls.pdf * selection));
 }
 
 void main() {
@@ -85,11 +127,19 @@ void main() {
     uint bounces = params.size.z;
     uint triangleCount = params.size.w;
     uint materialCount = params.envSize.z;
+    uint lightCount = params.envSize.w;
+    float selection = params.lightInfo.x;
     vec3 L = vec3(0.0), beta = vec3(1.0);
+    float scatterPdfOfDir = 0.0; // solid-angle pdf with which the last vertex drew `dir`
     for (uint depth = 0u;; ++depth) {
         uint tri;
         float t, b1, b2;
-        if (!bvhTrace(origin, dir, 0.0, kFloatMax, false, triangleCount, tri, t, b1, b2)) {
+        bool found = bvhTrace(origin, dir, 0.0, kFloatMax, false, triangleCount, tri, t, b1, b2);
+        // Analytic lights crossed before the surface (or the sun, when the ray escapes).
+        if (lightCount > 0u)
+            L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
+                                         lightCount, selection);
+        if (!found) {
             L += beta * envRadiance(dir);
             break;
         }
@@ -109,28 +159,40 @@ void main() {
         L += beta * mat.emissionType.rgb;
         if (depth == bounces) break;
 
-        // Next-event estimation and the wavelet product samplers (issue 6) go here.
-
         Frame frame = frameFromNormal(ns);
+        uint brdfType = uint(mat.emissionType.a);
+        vec3 wo = frameToLocal(frame, -dir);
+        // Lights are sampled from the continuation-ray origin, as the CPU tracer does.
+        vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
+        if (lightCount > 0u) {
+            float uSelect = pcgFloat(rng);
+            float ul1 = pcgFloat(rng);
+            float ul2 = pcgFloat(rng);
+            L += beta * nextEvent(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a,
+                                  frame, wo, ng, next, uSelect, ul1, ul2, lightCount, selection,
+                                  triangleCount);
+        }
+        // The wavelet product samplers (issue 6) go here.
+
         float u1 = pcgFloat(rng);
         float u2 = pcgFloat(rng);
         vec3 wiLocal, f;
         float pdf;
-        if (!brdfSample(uint(mat.emissionType.a), mat.baseColorRoughness.rgb,
-                        mat.baseColorRoughness.a, frameToLocal(frame, -dir), u1, u2, wiLocal, f,
-                        pdf) ||
+        if (!brdfSample(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo, u1,
+                        u2, wiLocal, f, pdf) ||
             pdf <= 0.0)
             break;
         vec3 wi = frameToWorld(frame, wiLocal);
         if (dot(wi, ng) <= 0.0) break; // below the true surface: light leak otherwise
         beta *= f * (wiLocal.z / pdf);
+        scatterPdfOfDir = pdf;
 
         if (int(depth) >= kRussianRouletteDepth) {
             float q = max(kMinContinueProbability, 1.0 - max(beta.r, max(beta.g, beta.b)));
             if (pcgFloat(rng) < q) break;
             beta /= 1.0 - q;
         }
-        origin = position + ng * (kRayOffset * max(1.0, length(position)));
+        origin = next;
         dir = wi;
     }
     accumulation[pixelIndex] += vec4(L, 1.0);

@@ -77,12 +77,13 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
       << "  \"choices\": [\n"
       << "    {\"what\": \"sampler\", \"value\": \"" << render::samplerKindName(o.sampler)
       << "\", \"reason\": \"chosen with --sampler (default bsdf until issue 6)\"}";
-    // The Vulkan tracer does not sample analytic lights yet: say so rather than let a
-    // different image pass unnoticed.
-    if (lightCount > 0 && s.deviceName.rfind("vulkan", 0) == 0)
-        j << ",\n    {\"what\": \"analytic lights\", \"value\": \"not rendered\", "
+    // Both tracers render analytic lights the same way (docs/estimator.md "Analytic lights").
+    if (lightCount > 0)
+        j << ",\n    {\"what\": \"analytic lights\", \"value\": \"nee+mis\", "
              "\"reason\": \""
-          << lightCount << " light(s) ignored by the Vulkan tracer until issue 6\"}";
+          << lightCount
+          << " light(s): next-event estimation, uniform selection, power-heuristic MIS with "
+             "BSDF sampling\"}";
     j << "\n"
       << "  ]\n"
       << "}\n";

@@ -29,7 +29,15 @@ constexpr uint32_t kWorkgroupX = 8;
 constexpr uint32_t kWorkgroupY = 8;
 
 // Binding order of path_tracer.comp.
-enum Binding : uint32_t { kParams, kNodes, kTriangles, kMaterials, kEnvironment, kAccumulation };
+enum Binding : uint32_t {
+    kParams,
+    kNodes,
+    kTriangles,
+    kMaterials,
+    kEnvironment,
+    kAccumulation,
+    kLights
+};
 
 struct PassPush {
     uint32_t seedLo, seedHi;
@@ -69,7 +77,8 @@ private:
     // The context is declared first so it is destroyed last; the runner last so its destructor
     // (which waits for the last submit) runs before any buffer goes away.
     std::unique_ptr<vk::Context> m_context;
-    vk::Buffer m_params, m_nodes, m_triangles, m_materials, m_environment, m_accumulation;
+    vk::Buffer m_params, m_nodes, m_triangles, m_materials, m_environment, m_accumulation,
+        m_lights;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
@@ -134,7 +143,8 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         {"path_tracer",
          std::move(spirv.value()),
          {BindingKind::UniformBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer,
-          BindingKind::StorageBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer},
+          BindingKind::StorageBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer,
+          BindingKind::StorageBuffer},
          sizeof(PassPush)});
     if (!kernel)
         return kernel.error();
@@ -162,10 +172,6 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
 }
 
 util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::Bvh& bvh) {
-    if (!scene.lighting.lights.empty())
-        util::logWarning("Vulkan path tracer: " + std::to_string(scene.lighting.lights.size()) +
-                         " analytic light(s) not rendered yet (issue 6); environment and "
-                         "emissive surfaces only");
     auto packed = packGpuScene(scene, bvh, m_options);
     if (!packed)
         return packed.error();
@@ -189,6 +195,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
          kStorage, "materials"},
         {kEnvironment, &m_environment, d.envTexels.data(), d.envTexels.size() * sizeof(float),
          kStorage, "environment"},
+        {kLights, &m_lights, d.lights.data(), d.lights.size() * sizeof(GpuLight), kStorage,
+         "lights"},
     };
     std::vector<vk::Buffer> fresh;
     for (const Upload& u : uploads) {

@@ -16,4 +16,16 @@ bool brdfSample(uint type, vec3 baseColor, float roughness, vec3 wo, float u1, f
     return lambertSample(baseColor, wo, u1, u2, wi, f, pdf);
 }
 
+// f(wo, wi) without the cosine (next-event estimation).
+vec3 brdfEval(uint type, vec3 baseColor, float roughness, vec3 wo, vec3 wi) {
+    if (type == kBrdfGgx) return ggxEval(baseColor, roughness, wo, wi);
+    return lambertEval(baseColor, wo, wi);
+}
+
+// Solid-angle pdf with which brdfSample draws wi (MIS weights).
+float brdfPdf(uint type, float roughness, vec3 wo, vec3 wi) {
+    if (type == kBrdfGgx) return ggxPdf(roughness, wo, wi);
+    return lambertPdf(wo, wi);
+}
+
 #endif
