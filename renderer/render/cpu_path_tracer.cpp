@@ -44,11 +44,6 @@ CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (options.bounces < 0)
         return util::makeError(ErrorKind::Invalid, "",
                                "bounces must be >= 0, got " + std::to_string(options.bounces));
-    if (options.sampler != SamplerKind::Bsdf)
-        return util::makeError(ErrorKind::Unsupported, "",
-                               std::string("sampler '") + samplerKindName(options.sampler) +
-                                   "' is not implemented by the CPU tracer yet (issue 6); use bsdf");
-
     std::vector<ResolvedMaterial> materials;
     // The default material sits after the scene's: bvh.cpp gives objects whose material id is
     // unknown the index materials.size().
@@ -63,9 +58,34 @@ CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
                                    "/materials/" + std::to_string(i) + "/brdf");
         materials.push_back({brdf, plugins::BrdfParams{m.baseColor, m.roughness}, m.emission});
     }
+    // Direction-sampler tables for the materials some object uses (bvh.cpp's resolution: an
+    // unknown material id is the default, last), built once for the scene (DESIGN.md §7).
+    std::shared_ptr<const DirectionSamplerTables> tables;
+    if (options.sampler != SamplerKind::Bsdf) {
+        std::vector<bool> used(all.size(), false);
+        for (const scene::Object& obj : scene->objects) {
+            size_t index = all.size() - 1;
+            for (size_t i = 0; i + 1 < all.size(); ++i)
+                if (all[i].id == obj.materialId) {
+                    index = i;
+                    break;
+                }
+            used[index] = true;
+        }
+        std::vector<SamplerMaterial> samplerMaterials;
+        for (size_t i = 0; i < all.size(); ++i)
+            if (used[i]) {
+                materials[i].samplerIndex = int(samplerMaterials.size());
+                samplerMaterials.push_back({all[i].name, materials[i].brdf, materials[i].params});
+            }
+        tables = DirectionSamplerTables::build(scene->lighting.environment,
+                                               std::move(samplerMaterials), options.sampler);
+    }
     if (threadCount <= 0) threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
-    return std::unique_ptr<CpuPathTracer>(new CpuPathTracer(
+    std::unique_ptr<CpuPathTracer> tracer(new CpuPathTracer(
         std::move(scene), std::move(bvh), options, std::move(materials), threadCount));
+    tracer->m_samplerTables = std::move(tables);
+    return tracer;
 }
 
 CpuPathTracer::CpuPathTracer(std::shared_ptr<const scene::Scene> scene,
@@ -114,6 +134,12 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
         const glm::vec3& ng = sp.geometric;
         const util::Frame frame = util::Frame::fromNormal(sp.shading);
         const glm::vec3 wo = frame.toLocal(-dir);
+        // The vertex's direction sampler (not `bsdf`): drawing and MIS weights both use it.
+        std::optional<DirectionSampler> ds;
+        if (m_samplerTables && mat.samplerIndex >= 0)
+            ds.emplace(*m_samplerTables, m_options.sampler,
+                       ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
+        const DirectionSampler* sampler = ds ? &*ds : nullptr;
 
         L += beta * mat.emission;
         if (depth == m_options.bounces) break;
@@ -126,13 +152,16 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
             const float uSelect = rng.nextFloat();
             const float ul1 = rng.nextFloat();
             const float ul2 = rng.nextFloat();
-            L += beta * nextEvent(mat, frame, wo, ng, next, uSelect, ul1, ul2);
+            L += beta * nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2);
         }
 
         const float u1 = rng.nextFloat();
         const float u2 = rng.nextFloat();
-        const ScatterDraw s = sampleScatter(mat, wo, u1, u2);
-        if (!s.valid || s.pdf <= 0.0f) break;
+        // The technique choice of a DirectionSampler mixture: drawn only when one is used, so
+        // `bsdf` keeps the draw order the Vulkan tracer shares (docs/estimator.md).
+        const float u3 = sampler ? rng.nextFloat() : 0.0f;
+        const ScatterDraw s = sampleScatter(mat, frame, sampler, wo, u1, u2, u3);
+        if (!s.valid || !(s.pdf > 0.0f) || s.wi.z <= 0.0f) break;
         const glm::vec3 wi = frame.toWorld(s.wi);
         if (glm::dot(wi, ng) <= 0.0f) break; // below the true surface: light leak otherwise
         beta *= s.f * (s.wi.z / s.pdf);
@@ -152,19 +181,36 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
 }
 
 CpuPathTracer::ScatterDraw CpuPathTracer::sampleScatter(const ResolvedMaterial& mat,
-                                                        const glm::vec3& wo, float u1,
-                                                        float u2) const {
-    const plugins::BrdfSample s = mat.brdf->sample(mat.params, wo, u1, u2);
-    return ScatterDraw{s.wi, s.f, s.pdf, s.valid};
+                                                        const util::Frame& frame,
+                                                        const DirectionSampler* ds,
+                                                        const glm::vec3& wo, float u1, float u2,
+                                                        float u3) const {
+    if (!ds) {
+        const plugins::BrdfSample s = mat.brdf->sample(mat.params, wo, u1, u2);
+        return ScatterDraw{s.wi, s.f, s.pdf, s.valid};
+    }
+    // The estimator divides by the pdf of what was drawn (the mixture's, DESIGN.md §4).
+    const DirectionSample d = ds->sample(u1, u2, u3);
+    if (!d.valid)
+        return ScatterDraw{};
+    const glm::vec3 wi = frame.toLocal(d.wi);
+    return ScatterDraw{wi, mat.brdf->eval(mat.params, wo, wi), d.pdf, true};
 }
 
-float CpuPathTracer::scatterPdf(const ResolvedMaterial& mat, const glm::vec3& wo,
+float CpuPathTracer::scatterPdf(const ResolvedMaterial& mat, const util::Frame& frame,
+                                const DirectionSampler* ds, const glm::vec3& wo,
                                 const glm::vec3& wi) const {
-    return mat.brdf->pdf(mat.params, wo, wi);
+    if (!ds)
+        return mat.brdf->pdf(mat.params, wo, wi);
+    return ds->pdf(frame.toWorld(wi));
+}
+
+std::string CpuPathTracer::samplerReport() const {
+    return m_samplerTables ? m_samplerTables->report() : std::string();
 }
 
 glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
-                                   const glm::vec3& wo, const glm::vec3& ng,
+                                   const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng,
                                    const glm::vec3& origin, float uSelect, float u1,
                                    float u2) const {
     const LightSampler& light = m_lights.light(m_lights.select(uSelect));
@@ -180,7 +226,7 @@ glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Fram
     if (scene::occluded(*m_bvh, origin, ls.wi, 0.0f,
                         std::min(ls.distance, std::numeric_limits<float>::max())))
         return glm::vec3(0.0f);
-    const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, wo, wi);
+    const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, frame, ds, wo, wi);
     const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy);
     return f * ls.value * (wi.z * w / (ls.pdf * m_lights.selectionProbability()));
 }

@@ -6,14 +6,19 @@
 // over 16×16 tiles, accumulation in double.
 //
 // Analytic lights (point, sphere, rect, spot, sun) get next-event estimation at every hit, MIS'd
-// with BSDF sampling (light_set.h; docs/estimator.md "Analytic lights"). Direction samplers: only
-// `bsdf` so far; the env/mis/wavelet/oracle DirectionSampler (issue 6) replaces the BSDF sampling
-// step in sampleScatter/scatterPdf, the one place that draws the next direction.
+// with BSDF sampling (light_set.h; docs/estimator.md "Analytic lights"). Direction samplers
+// (RenderOptions::sampler, issue 6): `bsdf` draws from the material's plugin with (u1, u2), the
+// draw order the Vulkan tracer shares; every other kind (uniform, cosine, env, mis, wavelet,
+// oracle) draws from a DirectionSampler (direction_sampler.h) with (u1, u2, u3), its tables built
+// once at create() for the materials the scene's objects use. sampleScatter/scatterPdf are the one
+// place that draws the next direction and the one pdf the MIS weights of analytic lights use, so
+// a light hit by a sampled direction is weighted with the pdf of the sampler actually used.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.
 #pragma once
 
 #include "render/cpu_camera.h"
 #include "render/cpu_environment.h"
+#include "render/direction_sampler.h"
 #include "render/integrator.h"
 #include "render/light_set.h"
 #include "render/render_options.h"
@@ -26,6 +31,8 @@
 #include <glm/vec3.hpp>
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace wavelit::render {
@@ -52,6 +59,8 @@ public:
     glm::vec3 samplePixel(int x, int y, int pass) const;
 
     int threadCount() const { return m_threadCount; }
+    // The direction sampler's report (env resolution, per-material choices); empty for `bsdf`.
+    std::string samplerReport() const;
 
     // Test hook: which strategies reach analytic area lights (light_set.h). Renders use Mis; the
     // three must agree in the mean. Changing it does not reset the accumulation.
@@ -59,10 +68,12 @@ public:
 
 private:
     // A material resolved once: plugin pointer and parameters, so the hot loop does no lookups.
+    // samplerIndex: the material's index in m_samplerTables (-1: no object uses it).
     struct ResolvedMaterial {
         const plugins::Brdf* brdf;
         plugins::BrdfParams params;
         glm::vec3 emission;
+        int samplerIndex = -1;
     };
 
     CpuPathTracer(std::shared_ptr<const scene::Scene> scene, std::shared_ptr<const scene::Bvh> bvh,
@@ -70,22 +81,26 @@ private:
                   int threadCount);
     const ResolvedMaterial& material(float index) const;
 
-    // The BSDF-sampling step (local shading frame, solid-angle pdf). A DirectionSampler with
-    // sample(u1, u2, u3) → {wi, pdf, valid} and pdf(wi) plugs in here: f then comes from eval.
+    // The direction-sampling step (local shading frame, solid-angle pdf). `ds` is the vertex's
+    // DirectionSampler (nullptr for the `bsdf` kind: the plugin samples with u1, u2, u3 unused);
+    // f always comes from the plugin's eval at the drawn direction.
     struct ScatterDraw {
         glm::vec3 wi{0.0f, 0.0f, 1.0f};
         glm::vec3 f{0.0f};
         float pdf = 0.0f;
         bool valid = false;
     };
-    ScatterDraw sampleScatter(const ResolvedMaterial& mat, const glm::vec3& wo, float u1,
-                              float u2) const;
-    float scatterPdf(const ResolvedMaterial& mat, const glm::vec3& wo, const glm::vec3& wi) const;
+    ScatterDraw sampleScatter(const ResolvedMaterial& mat, const util::Frame& frame,
+                              const DirectionSampler* ds, const glm::vec3& wo, float u1, float u2,
+                              float u3) const;
+    // pdf of sampleScatter's draw at local direction wi (the MIS partner of light sampling).
+    float scatterPdf(const ResolvedMaterial& mat, const util::Frame& frame,
+                     const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& wi) const;
     // Next-event estimation from `origin` (the offset hit point the continuation ray leaves from):
     // one light chosen by uSelect, sampled with (u1, u2), shadow ray, MIS weight. Radiance
     // toward the viewer, before the path throughput.
     glm::vec3 nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
-                        const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
+                        const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
                         float uSelect, float u1, float u2) const;
 
     std::shared_ptr<const scene::Scene> m_scene;
@@ -95,6 +110,8 @@ private:
     CpuCamera m_camera;
     CpuEnvironment m_environment;
     LightSet m_lights;
+    // Direction-sampler tables (nullptr for `bsdf`): built once per scene in create().
+    std::shared_ptr<const DirectionSamplerTables> m_samplerTables;
     LightStrategy m_lightStrategy = LightStrategy::Mis;
     int m_threadCount;
     std::vector<glm::dvec3> m_sum;

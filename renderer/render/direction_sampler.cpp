@@ -13,17 +13,6 @@
 namespace wavelit::render {
 namespace {
 
-struct KindName {
-    SamplerKind kind;
-    const char* name;
-};
-constexpr KindName kKindNames[] = {
-    {SamplerKind::Uniform, "uniform"}, {SamplerKind::Cosine, "cosine"},
-    {SamplerKind::Bsdf, "bsdf"},       {SamplerKind::Env, "env"},
-    {SamplerKind::Mis, "mis"},         {SamplerKind::Wavelet, "wavelet"},
-    {SamplerKind::Oracle, "oracle"},
-};
-
 // One-sample MIS of two techniques at 1/2 each (the `mis` kind).
 constexpr double kMisWeight = 0.5;
 // The oracle's defensive share: small, so it stays close to the ideal, but non-zero so tails
@@ -40,18 +29,9 @@ constexpr int kTailLevel = 4; // 16^2 cells: the tail estimate costs 256 BRDF ev
 
 // samplerKindName lives in render_options.cpp (one name table for CLI and samplers).
 
-std::optional<SamplerKind> parseSamplerKind(std::string_view name) {
-    for (const KindName& k : kKindNames)
-        if (name == k.name)
-            return k.kind;
-    return std::nullopt;
-}
-
 std::vector<SamplerKind> allSamplerKinds() {
-    std::vector<SamplerKind> kinds;
-    for (const KindName& k : kKindNames)
-        kinds.push_back(k.kind);
-    return kinds;
+    return {SamplerKind::Uniform, SamplerKind::Cosine, SamplerKind::Bsdf, SamplerKind::Env,
+            SamplerKind::Mis,     SamplerKind::Wavelet, SamplerKind::Oracle};
 }
 
 std::shared_ptr<const DirectionSamplerTables>
@@ -162,13 +142,14 @@ void DirectionSampler::addProduct(SamplerKind kind) {
                                    : "wavelet: all-zero product here, bsdf lobe";
         }
     }
-    // Shares (one-sample mixture; variance sum_i I_i^2 / c_i is least for c_i ~ I_i when each
-    // technique matches its part): the lobe technique (product, else bsdf) gets the lobe's share
-    // of the integrand, env sampling the share outside the lobe (a sun in the BRDF's tail).
-    const double lobe = m_product ? m_product->integralSolidAngle() : bsdfLobeIntegral();
-    const double tail = tailIntegral(axis, capAngle);
-    const double envShare =
-        std::clamp(tail / std::max(lobe + tail, 1e-300), kMinEnvShare, kMaxEnvShare);
+    // Shares of the one-sample mixture. If each technique served only its own part of the
+    // integrand, Var + I^2 = sum_i M_i / c_i (M_i: that part's second moment under technique i
+    // alone), least for c_i ~ sqrt(M_i). The lobe part is the lobe technique's (product, else
+    // bsdf); the rest (a sun in the BRDF's tail) is env sampling's, estimated on coarse cells.
+    const double lobeMoment = m_product ? productLobeMoment() : bsdfLobeMoment();
+    const double tailMoment = tailEnvMoment(axis, capAngle);
+    const double a = std::sqrt(std::max(tailMoment, 0.0)), b = std::sqrt(std::max(lobeMoment, 0.0));
+    const double envShare = std::clamp(a / std::max(a + b, 1e-300), kMinEnvShare, kMaxEnvShare);
     if (m_product)
         m_components = {{Technique::Product, 1.0 - envShare - bsdfShare},
                         {Technique::Bsdf, bsdfShare},
@@ -180,10 +161,16 @@ void DirectionSampler::addProduct(SamplerKind kind) {
     m_describe += buf;
 }
 
-double DirectionSampler::bsdfLobeIntegral() const {
-    // A stratified 4x4 BSDF estimate with the env's cell averages: the lobe is narrower than an
-    // env texel here, so this is close to the lobe's integral.
+double DirectionSampler::productLobeMoment() const {
+    // The product is close to the lobe's integrand, so its second moment is close to I_lobe^2.
+    const double lobe = m_product->integralSolidAngle();
+    return lobe * lobe;
+}
+
+double DirectionSampler::bsdfLobeMoment() const {
+    // Stratified 4x4 BSDF draws with the env's cell averages: the mean of (g/p)^2.
     const SamplerEnvironment& env = m_tables->environment();
+    const int side = 1 << env.level();
     double sum = 0.0;
     for (int j = 0; j < kLobeStrata; ++j)
         for (int i = 0; i < kLobeStrata; ++i) {
@@ -191,19 +178,23 @@ double DirectionSampler::bsdfLobeIntegral() const {
                 m_material->params, m_woLocal, (i + 0.5f) / kLobeStrata, (j + 0.5f) / kLobeStrata);
             if (!s.valid || !(s.pdf > 0.0f))
                 continue;
-            const glm::dvec2 p = octSquarePoint(env.map(), env.toLocal(glm::dvec3(fromShading(s.wi))));
-            const int side = 1 << env.level();
-            sum += double(util::luminance(s.f)) * s.wi.z / s.pdf *
-                   env.cellAverage(env.level(), int(p.x * side), int(p.y * side));
+            const glm::dvec2 p =
+                octSquarePoint(env.map(), env.toLocal(glm::dvec3(fromShading(s.wi))));
+            const double g = double(util::luminance(s.f)) * s.wi.z / s.pdf *
+                             env.cellAverage(env.level(), int(p.x * side), int(p.y * side));
+            sum += g * g;
         }
     return sum / (kLobeStrata * kLobeStrata);
 }
 
-double DirectionSampler::tailIntegral(const glm::dvec3& axisLocal, double capAngle) const {
-    // env x BRDF x cos on coarse octahedral cells outside the lobe (the product's window, else
-    // the lobe's cap widened by a cell): where env sampling must take over.
+double DirectionSampler::tailEnvMoment(const glm::dvec3& axisLocal, double capAngle) const {
+    // Second moment of env sampling over the coarse cells outside the lobe (the product's
+    // window, else the lobe's cap widened by a cell): sum_c (L_c fcos_c)^2 / p_c dw with
+    // p_c = L_c / E, E the env's integral: sum_c L_c fcos_c^2 E dw.
     const SamplerEnvironment& env = m_tables->environment();
     const int side = 1 << kTailLevel;
+    const double dw = 4.0 * std::numbers::pi / (double(side) * side);
+    const double energy = env.cellAverage(0, 0, 0) * 4.0 * std::numbers::pi;
     const double cellAngle = std::sqrt(4.0 * std::numbers::pi) / side;
     const double cosCap = std::cos(std::min(capAngle + cellAngle, std::numbers::pi));
     double sum = 0.0;
@@ -216,10 +207,10 @@ double DirectionSampler::tailIntegral(const glm::dvec3& axisLocal, double capAng
             const glm::dvec3 d = env.map().toDirection(0, p);
             if (!m_product && glm::dot(d, axisLocal) > cosCap)
                 continue;
-            sum += env.cellAverage(kTailLevel, x, y) *
-                   double(util::luminance(brdfCos(glm::vec3(env.toWorld(d)))));
+            const double fcos = double(util::luminance(brdfCos(glm::vec3(env.toWorld(d)))));
+            sum += env.cellAverage(kTailLevel, x, y) * fcos * fcos;
         }
-    return sum * 4.0 * std::numbers::pi / (double(side) * side);
+    return sum * energy * dw;
 }
 
 glm::vec3 DirectionSampler::toShading(const glm::vec3& w) const {

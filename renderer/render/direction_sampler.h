@@ -8,13 +8,16 @@
 //   mis      one-sample MIS of bsdf and env, 1/2 each: pdf = (p_bsdf + p_env) / 2, which is the
 //            balance heuristic in the one-sample model (f L cos / sum c_i p_i)
 //   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
-//            refined by the env pyramid, env_product_sampler.h) mixed with bsdf and env sampling
-//            by the per-material policy (env_product_tables.h): pdf = sum c_i p_i, so no
-//            direction with a non-zero integrand has zero pdf. Narrow lobes (policy BsdfOnly),
-//            black environments and all-zero products use bsdf sampling alone.
+//            refined by the env pyramid, env_product_sampler.h) for the lobe, plus bsdf (0.1,
+//            defensive) and env sampling with a per-point share c_env ~ sqrt(M_tail) /
+//            (sqrt(M_tail) + sqrt(M_lobe)) (second moments estimated on 16^2 coarse cells /
+//            4x4 BSDF strata), clamped to [0.05, 0.8]: pdf = sum c_i p_i, so no direction with a
+//            non-zero integrand has zero pdf. Lobes narrower than 2 env texels (policy BsdfLobe)
+//            use bsdf for the lobe + env with the same share rule; black env / all-zero
+//            product: bsdf alone.
 //   oracle   a dense 128^2 product of BRDF x cos and the env over a lobe-fitted window at the
 //            exact reflection vector, refined by the env pyramid (oracle_sampler.h): the ideal
-//            the wavelet sampler approximates; 0.9 product + 0.05 bsdf + 0.05 env.
+//            the wavelet sampler approximates; 0.05 bsdf, env share as for wavelet.
 //
 // Contract for the tracers: build DirectionSamplerTables once per scene (and again after change
 // sets touching the environment or a material; rebuilding is per material, see build()), then per
@@ -34,6 +37,7 @@
 #include "plugins/brdf.h"
 #include "render/env_product_sampler.h"
 #include "render/env_product_tables.h"
+#include "render/render_options.h"
 #include "render/sampler_environment.h"
 #include "scene/scene.h"
 
@@ -47,10 +51,7 @@
 
 namespace wavelit::render {
 
-enum class SamplerKind { Uniform, Cosine, Bsdf, Env, Mis, Wavelet, Oracle };
-
-const char* samplerKindName(SamplerKind kind);
-std::optional<SamplerKind> parseSamplerKind(std::string_view name);
+// SamplerKind, samplerKindName and parseSamplerKind live in render_options.h (the CLI's flag).
 std::vector<SamplerKind> allSamplerKinds();
 
 // A material as the samplers need it (scene::Material resolved to its plugin).
@@ -128,8 +129,9 @@ private:
     double techniquePdf(Technique t, const glm::vec3& local, const glm::dvec3& envLocal) const;
     double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const;
     void addProduct(SamplerKind kind);
-    double bsdfLobeIntegral() const;
-    double tailIntegral(const glm::dvec3& axisLocal, double capAngle) const;
+    double productLobeMoment() const;
+    double bsdfLobeMoment() const;
+    double tailEnvMoment(const glm::dvec3& axisLocal, double capAngle) const;
 
     const DirectionSamplerTables* m_tables;
     SamplerKind m_kind;

@@ -27,7 +27,7 @@ constexpr double kLobeWidthPerAlpha = 2.0;
 constexpr double kCapCoverage = 3.0;
 // A lobe narrower than this many env texels sees an environment constant across it: BSDF
 // sampling is then near-ideal, and a product cannot resolve more than the env does.
-constexpr double kMinLobeInEnvTexels = 1.0;
+constexpr double kMinLobeInEnvTexels = 2.0; // 1.0 measured 2.5x worse than mis at r = 0.05, N = 10
 
 double envTexelAngle(const SamplerEnvironment& env) {
     return std::sqrt(4.0 * kPi) * std::ldexp(1.0, -env.level());
@@ -73,6 +73,7 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     const double alpha = ggxAlpha(params.roughness);
     p.lobeHalfWidth = kLobeWidthPerAlpha * alpha;
     const double texel = envTexelAngle(env);
+    p.capHalfAngle = kCapCoverage * p.lobeHalfWidth;
     if (p.lobeHalfWidth < kMinLobeInEnvTexels * texel) {
         p.mode = ProductMode::BsdfLobe;
         std::snprintf(why, sizeof why,

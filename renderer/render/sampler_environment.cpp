@@ -2,7 +2,6 @@
 
 #include "render/cpu_environment.h"
 #include "util/timer.h"
-#include "wavelet/equirect_resample.h"
 #include "wavelet/scaling_tree.h"
 
 #include <glm/common.hpp>
@@ -16,8 +15,48 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
-constexpr int kHoleSamples = 3;
+constexpr int kLookups = 3;
 constexpr double kSupportFloor = 1e-6; // x the mean luminance
+
+// Steps per octahedral texel side when walking an equirect texel's edges.
+constexpr int kEdgeStepsPerTexel = 16;
+constexpr int kMaxEdgeSteps = 256;
+
+void raiseAlongEquirectEdges(const util::ImageRGB& image, double scale, const glm::vec3& tint,
+                             const wavelet::OctahedralMap& map, wavelet::SquareGrid& grid) {
+    const int w = image.width, h = image.height, side = grid.size();
+    const double cellAngle = std::sqrt(4.0 * kPi) / side;
+    auto raise = [&](double theta, double phi, double value) {
+        const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta),
+                           std::sin(theta) * std::sin(phi));
+        const glm::dvec2 p = glm::min(map.toSquare(d).uv, glm::dvec2(kOneMinusEpsilon));
+        double& v = grid.at(std::min(int(p.x * side), side - 1), std::min(int(p.y * side), side - 1));
+        v = std::max(v, value);
+    };
+    for (int y = 0; y < h; ++y) {
+        const double t0 = kPi * y / h, t1 = kPi * (y + 1) / h;
+        // Meridian edges span t1 - t0; latitude edges span 2 pi / w x sin(theta).
+        const int nt = std::clamp(int(std::ceil(kEdgeStepsPerTexel * (t1 - t0) / cellAngle)), 2,
+                                  kMaxEdgeSteps);
+        const double arc = 2.0 * kPi / w * std::max(std::sin(t0), std::sin(t1));
+        const int np =
+            std::clamp(int(std::ceil(kEdgeStepsPerTexel * arc / cellAngle)), 2, kMaxEdgeSteps);
+        for (int x = 0; x < w; ++x) {
+            const double value = std::max(0.0, scale * double(util::luminance(image.at(x, y) * tint)));
+            const double p0 = 2.0 * kPi * (double(x) / w - 0.5), p1 = 2.0 * kPi * (double(x + 1) / w - 0.5);
+            for (int i = 0; i <= nt; ++i) {
+                const double t = t0 + (t1 - t0) * i / nt;
+                raise(t, p0, value);
+                raise(t, p1, value);
+            }
+            for (int i = 0; i <= np; ++i) {
+                const double ph = p0 + (p1 - p0) * i / np;
+                raise(t0, ph, value);
+                raise(t1, ph, value);
+            }
+        }
+    }
+}
 
 } // namespace
 
@@ -41,30 +80,37 @@ SamplerEnvironment SamplerEnvironment::build(const scene::Environment& env,
         const int h = env.image->height;
         const int n = std::clamp(int(std::ceil(std::log2(double(std::max(h, 1))))) + 1,
                                  options.minLevel, options.maxLevel);
-        const auto faces = wavelet::resampleEquirect(*env.image, s.m_map, n);
+        // Each texel takes the MAX of the tracer's own nearest-texel lookup (cpu_environment.h)
+        // over kLookups^2 points: a conservative map, so no part of a bright equirect texel (a
+        // sun) sits in an octahedral texel whose density is the sky's. An energy-preserving
+        // splat (wavelet/equirect_resample.h) spreads a sun over texels it only partly covers
+        // and leaves the rest of its equirect texel at sky density: those rare draws carry 1e6 x
+        // weights, a heavy tail the tests saw as a 5% low mean at 2e4 samples.
         grid = wavelet::SquareGrid(n);
-        for (size_t i = 0; i < grid.values.size(); ++i)
-            grid.values[i] =
-                std::max(0.0, scale * double(util::luminance(faces[0].pixels[i] * tint)));
-        // The splat leaves some texels near the poles without a source sample (seen at +Y with
-        // 512x256 -> 512^2): fill those from the tracer's own nearest-texel lookup.
         const CpuEnvironment unrotated(scene::Environment{env.path, env.image, 0.0f,
                                                           env.intensity, env.tint});
         const int side = grid.size();
         double sum = 0.0;
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {
-                double& v = grid.at(x, y);
-                if (v <= 0.0) {
-                    for (int j = 0; j < kHoleSamples; ++j)
-                        for (int i = 0; i < kHoleSamples; ++i)
-                            v += double(util::luminance(unrotated.radiance(glm::vec3(
-                                s.m_map.toDirection(0, {(x + (i + 0.5) / kHoleSamples) / side,
-                                                        (y + (j + 0.5) / kHoleSamples) / side})))));
-                    v /= double(kHoleSamples * kHoleSamples);
-                }
-                sum += v;
+                double v = 0.0;
+                for (int j = 0; j < kLookups; ++j)
+                    for (int i = 0; i < kLookups; ++i)
+                        v = std::max(v, double(util::luminance(unrotated.radiance(glm::vec3(
+                                            s.m_map.toDirection(0, {(x + (i + 0.5) / kLookups) / side,
+                                                                    (y + (j + 0.5) / kLookups) / side}))))));
+                grid.at(x, y) = v;
             }
+        // Lookups inside a texel miss the slivers where an equirect texel's edge cuts across it
+        // (measured: the 10^6 sun's texel still held octahedral texels at sky density, pdf
+        // 0.0014 vs 860 inside one equirect texel, and the env-table samplers read 3-5% low).
+        // So also walk every equirect texel's boundary at a fraction of an octahedral texel and
+        // raise each octahedral texel it crosses to that equirect texel's luminance: a texel
+        // that meets an equirect texel either holds lookup points inside it or is crossed by its
+        // boundary, so the map bounds the lookup everywhere up to slivers shorter than the step.
+        raiseAlongEquirectEdges(*env.image, scale, tint, s.m_map, grid);
+        for (double v : grid.values)
+            sum += v;
         // Full support for the env technique wherever the environment may be non-zero: a floor
         // far below anything that matters for variance.
         const double floor = kSupportFloor * sum / double(grid.values.size());

@@ -3,9 +3,10 @@
 //
 // Holds, in the ENV-LOCAL frame (world rotated by -yaw about +Y, exactly as CpuEnvironment does
 // before its equirect lookup, docs/estimator.md "Environment"):
-//  - the luminance of the radiance resampled onto the equal-area octahedral map at level N
-//    (energy-preserving splat, wavelet/equirect_resample.h), N = ceil(log2(height)) + 1 capped at
-//    `maxLevel`: one octahedral texel is then at most about one equirect texel near the equator;
+//  - a conservative luminance map on the equal-area octahedral map at level N: per texel the max
+//    of the tracer's nearest-texel lookup over 3x3 points (see the .cpp for why not a splat),
+//    N = ceil(log2(height)) + 1 capped at `maxLevel`: one octahedral texel is then at most about
+//    one equirect texel near the equator;
 //  - its mip pyramid of cell averages (what product windows read as the env factor);
 //  - a HierarchicalSampler over it: the `env` technique and the fine pyramid that product
 //    samplers descend into below their own leaves (DESIGN.md §4.1, item 1).

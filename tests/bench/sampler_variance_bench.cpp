@@ -154,22 +154,6 @@ int main(int argc, char** argv) {
             }
             studies.push_back({std::string(name) + ".exr (512 wide)", *env});
         }
-    if (argc > 1 && std::strcmp(argv[1], "--debug-env") == 0) {
-        const SamplerEnvironment env = SamplerEnvironment::build(studies[0].env);
-        const DenseIntegrand integrand(studies[0].env, [](const glm::vec3& w) { return glm::vec3(w.y > 0 ? w.y : 0.0f); });
-        int zeros = 0;
-        integrand.moments([&](const glm::vec3& w) {
-            double p = env.pdfLocal(env.toLocal(glm::dvec3(w)));
-            if (p <= 0 && zeros++ < 10) {
-                glm::dvec2 q = octSquarePoint(env.map(), env.toLocal(glm::dvec3(w)));
-                std::printf("zero pdf at %f %f %f sq %.9f %.9f avg %g\n", w.x, w.y, w.z, q.x, q.y,
-                            env.cellAverage(env.level(), int(q.x * (1 << env.level())), int(q.y * (1 << env.level()))));
-            }
-            return p;
-        });
-        std::printf("zeros %d\n", zeros);
-        return 0;
-    }
     std::printf("# Sampler variance study\n\nRelative per-sample variance Var/I^2 of g/p (exact, "
                 "dense grid); lower is better.\n");
     for (const Study& s : studies)
