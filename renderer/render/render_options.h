@@ -11,8 +11,9 @@ namespace wavelit::render {
 
 enum class DeviceChoice { Auto, Vulkan, Cpu };
 
-// Direction samplers for the speed/error report (DESIGN.md §5.B). Until the wavelet samplers land
-// (issue 6), every choice but Bsdf reports Unsupported.
+// Direction samplers for the speed/error report (DESIGN.md §5.B). The CPU reference tracer runs all
+// of them (render/direction_sampler.h); the Vulkan tracer runs Bsdf only so far (issue 6) and
+// reports Unsupported for the rest, on which Auto falls back to the CPU tracer.
 enum class SamplerKind { Uniform, Cosine, Bsdf, Env, Mis, Wavelet, Oracle };
 
 util::Result<DeviceChoice> parseDeviceChoice(const std::string& text);
