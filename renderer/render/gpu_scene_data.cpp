@@ -1,5 +1,7 @@
 #include "render/gpu_scene_data.h"
 
+#include "render/light_sampler.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -39,79 +41,25 @@ util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
 } // namespace
 
 GpuLight packGpuLight(const scene::Light& light) {
-    // The same derivation, in the same precision, as LightSampler::LightSampler.
-    constexpr double kPiD = 3.14159265358979323846;
-    constexpr float kVerticalNormal = 0.999f;
-    GpuLight g{};
-    const glm::vec3 power = light.color * light.intensity;
-    glm::vec3 normal(0.0f, -1.0f, 0.0f);
-    const float len = glm::length(light.direction);
-    if (len > 0.0f)
-        normal = light.direction / len;
+    // The constants LightSampler uses on the CPU, so both tracers see the same values.
+    const LightConstants c = deriveLightConstants(light);
     uint32_t type = kGpuLightPoint;
-    bool delta = false;
-    glm::vec3 emission(0.0f), axisU(1.0f, 0.0f, 0.0f), axisV(0.0f, 0.0f, 1.0f);
-    float radius = 0.0f, area = 0.0f, cosInner = 1.0f, cosOuter = 1.0f;
-    float sin2Sun = 0.0f, oneMinusCosSun = 0.0f;
-    switch (light.type) {
-    case scene::LightType::Sphere:
-        if (light.radius > 0.0f) {
-            type = kGpuLightSphere;
-            radius = light.radius;
-            emission = power * float(1.0 / (4.0 * kPiD * kPiD * double(radius) * radius));
-            break;
-        }
-        [[fallthrough]];
-    case scene::LightType::Point:
-        type = kGpuLightPoint;
-        delta = true;
-        emission = power * float(1.0 / (4.0 * kPiD));
-        break;
-    case scene::LightType::Spot: {
-        type = kGpuLightSpot;
-        delta = true;
-        emission = power * float(1.0 / (4.0 * kPiD));
-        const double toRad = kPiD / 180.0;
-        cosInner = float(std::cos(double(light.coneInnerDeg) * toRad));
-        cosOuter = float(std::cos(double(light.coneOuterDeg) * toRad));
-        break;
+    switch (c.type) {
+    case scene::LightType::Point: type = kGpuLightPoint; break;
+    case scene::LightType::Sphere: type = kGpuLightSphere; break;
+    case scene::LightType::Spot: type = kGpuLightSpot; break;
+    case scene::LightType::Rect: type = kGpuLightRect; break;
+    case scene::LightType::Sun: type = kGpuLightSun; break;
     }
-    case scene::LightType::Rect: {
-        type = kGpuLightRect;
-        const glm::vec3 ref = std::abs(normal.y) > kVerticalNormal ? glm::vec3(0.0f, 0.0f, 1.0f)
-                                                                   : glm::vec3(0.0f, 1.0f, 0.0f);
-        const glm::vec3 u = glm::normalize(glm::cross(ref, normal));
-        const glm::vec3 v = glm::cross(normal, u);
-        axisU = u * (0.5f * light.size.x);
-        axisV = v * (0.5f * light.size.y);
-        area = light.size.x * light.size.y;
-        if (area > 0.0f)
-            emission = power * float(1.0 / (kPiD * double(area)));
-        break;
-    }
-    case scene::LightType::Sun: {
-        type = kGpuLightSun;
-        const double halfAngle = 0.5 * double(light.angularDiameterDeg) * kPiD / 180.0;
-        if (halfAngle <= 0.0) {
-            delta = true;
-            emission = power;
-            break;
-        }
-        const double s = std::sin(halfAngle), sHalf = std::sin(0.5 * halfAngle);
-        sin2Sun = float(s * s);
-        oneMinusCosSun = float(2.0 * sHalf * sHalf);
-        emission = power * float(1.0 / (kPiD * s * s));
-        break;
-    }
-    }
-    set4(g.positionType, light.position, float(type));
-    set4(g.normalRadius, normal, radius);
-    set4(g.emissionArea, emission, area);
-    set4(g.axisUInner, axisU, cosInner);
-    set4(g.axisVOuter, axisV, cosOuter);
-    g.sun[0] = sin2Sun;
-    g.sun[1] = oneMinusCosSun;
-    g.sun[2] = delta ? 1.0f : 0.0f;
+    GpuLight g{};
+    set4(g.positionType, c.position, float(type));
+    set4(g.normalRadius, c.normal, c.radius);
+    set4(g.emissionArea, c.emission, c.area);
+    set4(g.axisUInner, c.axisU, c.cosInner);
+    set4(g.axisVOuter, c.axisV, c.cosOuter);
+    g.sun[0] = c.sin2Sun;
+    g.sun[1] = c.oneMinusCosSun;
+    g.sun[2] = c.delta ? 1.0f : 0.0f;
     return g;
 }
 

@@ -50,57 +50,77 @@ float sphereOneMinusCos(float r2, float d2) {
 
 } // namespace
 
-LightSampler::LightSampler(const scene::Light& light) : m_type(light.type) {
+LightConstants deriveLightConstants(const scene::Light& light) {
+    LightConstants c;
+    c.type = light.type;
     const glm::vec3 power = light.color * light.intensity;
-    m_position = light.position;
+    c.position = light.position;
     const float len = glm::length(light.direction);
-    if (len > 0.0f) m_normal = light.direction / len;
+    if (len > 0.0f) c.normal = light.direction / len;
     switch (light.type) {
     case scene::LightType::Sphere:
         if (light.radius > 0.0f) {
-            m_radius = light.radius;
-            m_emission = power * float(1.0 / (4.0 * kPiD * kPiD * double(m_radius) * m_radius));
+            c.radius = light.radius;
+            c.emission = power * float(1.0 / (4.0 * kPiD * kPiD * double(c.radius) * c.radius));
             break;
         }
-        m_type = scene::LightType::Point; // r = 0: a point light of the same power
+        c.type = scene::LightType::Point; // r = 0: a point light of the same power
         [[fallthrough]];
     case scene::LightType::Point:
-        m_delta = true;
-        m_emission = power * float(1.0 / (4.0 * kPiD));
+        c.delta = true;
+        c.emission = power * float(1.0 / (4.0 * kPiD));
         break;
     case scene::LightType::Spot: {
-        m_delta = true;
-        m_emission = power * float(1.0 / (4.0 * kPiD));
+        c.delta = true;
+        c.emission = power * float(1.0 / (4.0 * kPiD));
         const double toRad = kPiD / 180.0;
-        m_cosInner = float(std::cos(double(light.coneInnerDeg) * toRad));
-        m_cosOuter = float(std::cos(double(light.coneOuterDeg) * toRad));
+        c.cosInner = float(std::cos(double(light.coneInnerDeg) * toRad));
+        c.cosOuter = float(std::cos(double(light.coneOuterDeg) * toRad));
         break;
     }
     case scene::LightType::Rect: {
-        const glm::vec3 ref = std::abs(m_normal.y) > kVerticalNormal ? glm::vec3(0.0f, 0.0f, 1.0f)
+        const glm::vec3 ref = std::abs(c.normal.y) > kVerticalNormal ? glm::vec3(0.0f, 0.0f, 1.0f)
                                                                     : glm::vec3(0.0f, 1.0f, 0.0f);
-        const glm::vec3 u = glm::normalize(glm::cross(ref, m_normal));
-        const glm::vec3 v = glm::cross(m_normal, u);
-        m_axisU = u * (0.5f * light.size.x);
-        m_axisV = v * (0.5f * light.size.y);
-        m_area = light.size.x * light.size.y;
-        if (m_area > 0.0f) m_emission = power * float(1.0 / (kPiD * double(m_area)));
+        const glm::vec3 u = glm::normalize(glm::cross(ref, c.normal));
+        const glm::vec3 v = glm::cross(c.normal, u);
+        c.axisU = u * (0.5f * light.size.x);
+        c.axisV = v * (0.5f * light.size.y);
+        c.area = light.size.x * light.size.y;
+        if (c.area > 0.0f) c.emission = power * float(1.0 / (kPiD * double(c.area)));
         break;
     }
     case scene::LightType::Sun: {
         const double halfAngle = 0.5 * double(light.angularDiameterDeg) * kPiD / 180.0;
         if (halfAngle <= 0.0) {
-            m_delta = true;
-            m_emission = power; // irradiance at normal incidence
+            c.delta = true;
+            c.emission = power; // irradiance at normal incidence
             break;
         }
         const double s = std::sin(halfAngle), sHalf = std::sin(0.5 * halfAngle);
-        m_sin2Sun = float(s * s);
-        m_oneMinusCosSun = float(2.0 * sHalf * sHalf);
-        m_emission = power * float(1.0 / (kPiD * s * s));
+        c.sin2Sun = float(s * s);
+        c.oneMinusCosSun = float(2.0 * sHalf * sHalf);
+        c.emission = power * float(1.0 / (kPiD * s * s));
         break;
     }
     }
+    return c;
+}
+
+LightSampler::LightSampler(const scene::Light& light) {
+    const LightConstants c = deriveLightConstants(light);
+    m_type = c.type;
+    m_delta = c.delta;
+    m_emission = c.emission;
+    m_position = c.position;
+    m_normal = c.normal;
+    m_axisU = c.axisU;
+    m_axisV = c.axisV;
+    m_radius = c.radius;
+    m_area = c.area;
+    m_cosInner = c.cosInner;
+    m_cosOuter = c.cosOuter;
+    m_sin2Sun = c.sin2Sun;
+    m_oneMinusCosSun = c.oneMinusCosSun;
 }
 
 LightSample LightSampler::sample(const glm::vec3& p, float u1, float u2) const {

@@ -55,6 +55,24 @@ struct LightHit {
     glm::vec3 radiance{0.0f};
 };
 
+// The constants every light's sampling and evaluation derive from the scene's physical units
+// (docs/estimator.md "Analytic lights"). Computed once here and shared by LightSampler (CPU) and
+// the GPU light packing (gpu_scene_data.cpp), so both tracers see bit-identical values.
+struct LightConstants {
+    scene::LightType type = scene::LightType::Point; // a Sphere of radius 0 becomes a Point
+    bool delta = false;
+    glm::vec3 emission{0.0f}; // area lights: radiance; point/spot: I = Φ/(4π); delta sun: E
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, -1.0f, 0.0f}; // `direction`, normalised: the way light travels
+    glm::vec3 axisU{1.0f, 0.0f, 0.0f}, axisV{0.0f, 0.0f, 1.0f}; // Rect: half extents × axes
+    float radius = 0.0f;
+    float area = 0.0f;
+    float cosInner = 1.0f, cosOuter = 1.0f;     // Spot
+    float sin2Sun = 0.0f, oneMinusCosSun = 0.0f; // Sun: sin²θs and 1 − cos θs
+};
+
+LightConstants deriveLightConstants(const scene::Light& light);
+
 class LightSampler {
 public:
     explicit LightSampler(const scene::Light& light);
