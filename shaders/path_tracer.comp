@@ -1,8 +1,10 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/cpu_path_tracer.cpp within noise.
-// BSDF sampling plus next-event estimation of the analytic lights with MIS (common/lights.glsl);
-// the wavelet product samplers of issue 6 plug in at the marked spot.
+// Next-event estimation of the analytic lights with MIS (common/lights.glsl); directions are drawn
+// by the BSDF or, when the driver defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), by
+// the direction samplers of common/direction_sampler.glsl (issue 6), whose mixture pdf is also
+// what the light MIS weights use.
 //
 // Buffers follow the layouts of renderer/scene/bvh.h and renderer/render/gpu_scene_data.h.
 #version 460
@@ -26,6 +28,8 @@ layout(std140, binding = 0) uniform Params {
     uvec4 size;        // width, height, bounces, triangle count
     uvec4 envSize;     // env width, env height (0 = constant), material count, light count
     vec4 lightInfo;    // x = light selection probability 1/n (computed on the CPU, as LightSet)
+    uvec4 samplerInfo; // sampler kind code, env lit (0/1), word offset of the 16^2 env averages
+    vec4 samplerEnv;   // x = the sampler env map's mean luminance
 } params;
 
 layout(push_constant) uniform Pass {
@@ -60,6 +64,22 @@ layout(std430, binding = 5) buffer Accumulation { vec4 accumulation[]; };
 #include "common/lights.glsl"
 layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
 
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+struct EnvNode {
+    float py0, px0y0, px0y1;
+    int firstChild;
+};
+struct SamplerMaterial {
+    uint mode, tableOffset, nodeOffset, scalingOffset;
+    float mixBsdf, capHalfAngle;
+    uint aroundNormal, pad;
+};
+layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
+layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
+layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };
+#include "common/direction_sampler.glsl"
+#endif
+
 #include "common/rng.glsl"
 #include "common/camera.glsl"
 #include "common/environment.glsl"
@@ -93,7 +113,11 @@ vec3 emissionAlongRay(vec3 origin, vec3 dir, float tMax, bool escaped, float bsd
 // CpuPathTracer::nextEvent with the Mis strategy, from the continuation-ray origin o.
 vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo, vec3 ng, vec3 o,
                float uSelect, float u1, float u2, uint lightCount, float selection,
-               uint triangleCount) {
+               uint triangleCount
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+               , DirSampler ds
+#endif
+) {
     Light l = analyticLights[min(uint(uSelect * float(lightCount)), lightCount - 1u)];
     LightSample ls = lightSample(l, o, u1, u2);
     if (!ls.valid || !(ls.pdf > 0.0)) return vec3(0.0);
@@ -106,7 +130,11 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
     float t, b1, b2;
     if (bvhTrace(o, ls.wi, 0.0, ls.distance, true, triangleCount, tri, t, b1, b2))
         return vec3(0.0);
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    float bsdfPdf = ls.delta ? 0.0 : dsPdf(ds, ls.wi);
+#else
     float bsdfPdf = ls.delta ? 0.0 : brdfPdf(type, roughness, wo, wi);
+#endif
     float w = ls.delta ? 1.0 : powerHeuristic(selection * ls.pdf, bsdfPdf);
     return f * ls.value * (wi.z * w / (ls.pdf * selection));
 }
@@ -164,25 +192,49 @@ void main() {
         vec3 wo = frameToLocal(frame, -dir);
         // Lights are sampled from the continuation-ray origin, as the CPU tracer does.
         vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+        SamplerGlobals globals;
+        globals.kind = params.samplerInfo.x;
+        globals.lit = params.samplerInfo.y != 0u;
+        globals.tailOffset = params.samplerInfo.z;
+        globals.envMean = params.samplerEnv.x;
+        globals.cosSinYaw = params.envRotation.xy;
+        DirSampler ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
+                                mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
+#endif
         if (lightCount > 0u) {
             float uSelect = pcgFloat(rng);
             float ul1 = pcgFloat(rng);
             float ul2 = pcgFloat(rng);
             L += beta * nextEvent(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a,
                                   frame, wo, ng, next, uSelect, ul1, ul2, lightCount, selection,
-                                  triangleCount);
+                                  triangleCount
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+                                  , ds
+#endif
+            );
         }
-        // The wavelet product samplers (issue 6) go here.
 
         float u1 = pcgFloat(rng);
         float u2 = pcgFloat(rng);
         vec3 wiLocal, f;
         float pdf;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+        // The mixture's draw; the estimator divides by its pdf (DESIGN.md §4).
+        float u3 = pcgFloat(rng);
+        vec3 wiWorld;
+        if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;
+        wiLocal = frameToLocal(frame, wiWorld);
+        if (wiLocal.z <= 0.0) break;
+        f = brdfEval(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo, wiLocal);
+        vec3 wi = wiWorld;
+#else
         if (!brdfSample(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo, u1,
                         u2, wiLocal, f, pdf) ||
             pdf <= 0.0)
             break;
         vec3 wi = frameToWorld(frame, wiLocal);
+#endif
         if (dot(wi, ng) <= 0.0) break; // below the true surface: light leak otherwise
         beta *= f * (wiLocal.z / pdf);
         scatterPdfOfDir = pdf;

@@ -2,12 +2,16 @@
 //  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]`
 // (DESIGN.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
-// applies the camera's exposure (display transform); EXR stores linear radiance. Exit codes:
-// 0 success, 1 bad input (message names the file), 2 bad usage.
+// applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
+// the options, timings, choices with their reasons and the sampler tables built (sizes, build
+// times; docs/file-formats.md "Render report"). Exit codes: 0 success, 1 bad input (message
+// names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/render_flags.h"
+#include "render/direction_sampler.h"
 #include "render/render_session.h"
+#include "render/sampler_tables_cache.h"
 #include "scene/atomic_file.h"
 #include "scene/image_io.h"
 #include "scene/scene_io.h"
@@ -48,9 +52,79 @@ std::string jsonEscape(const std::string& s) {
     return out;
 }
 
+const char* productModeName(const render::MaterialProductTables* t) {
+    if (!t)
+        return "none";
+    return t->policy().mode == render::ProductMode::Product ? "product" : "bsdf-lobe";
+}
+
+// The direction samplers' tables (DESIGN.md §7: what was built for this scene and why), or null
+// when the sampler needs none (`bsdf`) or the integrator reports none. Fields:
+// docs/file-formats.md "Render report".
+std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& scene) {
+    if (!s.samplerTables)
+        return "null";
+    const render::DirectionSamplerTables& t = *s.samplerTables;
+    const render::SamplerEnvironment& env = t.environment();
+    std::ostringstream j;
+    j.precision(9);
+    j << "{\n"
+      << "    \"sampler\": \"" << render::samplerKindName(t.kind()) << "\",\n"
+      << "    \"environment\": {\"octahedralLevel\": " << env.level()
+      << ", \"side\": " << (1 << env.level()) << ", \"bytes\": " << env.bytes()
+      << ", \"buildSeconds\": " << env.buildSeconds()
+      << ", \"lit\": " << (env.hasLight() ? "true" : "false")
+      << ", \"reused\": " << (t.environmentReused() ? "true" : "false") << "},\n"
+      << "    \"materials\": [";
+    size_t totalBytes = env.bytes(), productCount = 0;
+    double totalSeconds = env.buildSeconds();
+    for (size_t i = 0; i < t.materialCount(); ++i) {
+        const render::MaterialProductTables* p = t.productTables(i);
+        const std::string reason =
+            p ? p->policy().reason
+              : std::string("the ") + render::samplerKindName(t.kind()) +
+                    " sampler needs no per-material tables";
+        j << (i ? ",\n" : "\n") << "      {\"name\": \"" << jsonEscape(t.material(i).name)
+          << "\", \"mode\": \"" << productModeName(p) << "\", \"reason\": \"" << jsonEscape(reason)
+          << "\", \"binLevel\": " << (p ? p->policy().binLevel : 0)
+          << ", \"productLevel\": " << (p ? p->policy().productLevel : 0)
+          << ", \"envKeep\": " << (p ? p->policy().envKeep : 0)
+          << ", \"brdfKeep\": " << (p ? p->policy().brdfKeep : 0)
+          << ", \"factorCount\": " << (p ? p->factorCount() : 0)
+          << ", \"bytes\": " << (p ? p->bytes() : 0)
+          << ", \"buildSeconds\": " << (p ? p->buildSeconds() : 0.0)
+          << ", \"reused\": " << (t.productTablesReused(i) ? "true" : "false") << "}";
+        if (p) {
+            totalBytes += p->bytes();
+            totalSeconds += p->buildSeconds();
+            ++productCount;
+        }
+    }
+    j << "\n    ],\n    \"unusedMaterials\": [";
+    const std::vector<bool> used = render::materialsInUse(scene);
+    bool first = true;
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (!used[i]) {
+            j << (first ? "" : ", ") << "\"" << jsonEscape(scene.materials[i].name) << "\"";
+            first = false;
+        }
+    const render::SamplerTablesRebuilds& r = s.samplerRebuilds;
+    j << "],\n"
+      << "    \"totals\": {\"bytes\": " << totalBytes << ", \"buildSeconds\": " << totalSeconds
+      << ", \"productTables\": " << productCount << "},\n"
+      << "    \"rebuilds\": {\"environmentBuilds\": " << r.environmentBuilds
+      << ", \"environmentReuses\": " << r.environmentReuses
+      << ", \"materialBuilds\": " << r.materialBuilds
+      << ", \"materialReuses\": " << r.materialReuses << "}\n"
+      << "  }";
+    return j.str();
+}
+
 std::string reportJson(const std::string& scenePath, const std::string& output,
-                       const render::RenderOptions& o, const render::RenderStats& s,
-                       size_t lightCount, double totalSeconds) {
+                       const render::RenderOptions& o, bool samplerFromFlag,
+                       const render::RenderStats& s, const scene::Scene& scene,
+                       double totalSeconds) {
+    const size_t lightCount = scene.lighting.lights.size();
     std::ostringstream j;
     j.precision(9);
     double perPass = s.samplesPerPixel > 0 ? s.timings.passSeconds / s.samplesPerPixel : 0.0;
@@ -76,7 +150,8 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
       << "  },\n"
       << "  \"choices\": [\n"
       << "    {\"what\": \"sampler\", \"value\": \"" << render::samplerKindName(o.sampler)
-      << "\", \"reason\": \"chosen with --sampler (default bsdf until issue 6)\"}";
+      << "\", \"reason\": \""
+      << (samplerFromFlag ? "chosen with --sampler" : "the default: no --sampler given") << "\"}";
     // Both tracers render analytic lights the same way (docs/estimator.md "Analytic lights").
     if (lightCount > 0)
         j << ",\n    {\"what\": \"analytic lights\", \"value\": \"nee+mis\", "
@@ -85,7 +160,8 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
           << " light(s): next-event estimation, uniform selection, power-heuristic MIS with "
              "BSDF sampling\"}";
     j << "\n"
-      << "  ]\n"
+      << "  ],\n"
+      << "  \"samplerTables\": " << samplerTablesJson(s, scene) << "\n"
       << "}\n";
     return j.str();
 }
@@ -159,8 +235,8 @@ int run(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "warning: %d Vulkan validation messages\n", stats.validationMessages);
     if (auto reportPath = args->value("--report")) {
         auto ok = scene::writeFileAtomic(
-            *reportPath, reportJson(scenePath, *output, options, stats,
-                                   scene->lighting.lights.size(), total.seconds()));
+            *reportPath, reportJson(scenePath, *output, options, args->has("--sampler"), stats,
+                                   *scene, total.seconds()));
         if (!ok)
             return reportError(ok.error());
         std::printf("wrote %s\n", reportPath->c_str());

@@ -44,48 +44,71 @@ CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (options.bounces < 0)
         return util::makeError(ErrorKind::Invalid, "",
                                "bounces must be >= 0, got " + std::to_string(options.bounces));
-    std::vector<ResolvedMaterial> materials;
+    auto materials = resolveMaterials(*scene);
+    if (!materials)
+        return materials.error();
+    // Tables only for the materials some object uses (DESIGN.md §7).
+    SamplerTablesCache cache;
+    auto tables = cache.update(*scene, options.sampler);
+    if (!tables)
+        return tables.error();
+    setSamplerIndices(*materials, tables->samplerIndexOfMaterial);
+    if (threadCount <= 0) threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::unique_ptr<CpuPathTracer> tracer(new CpuPathTracer(
+        std::move(scene), std::move(bvh), options, std::move(materials.value()), threadCount));
+    tracer->m_samplerCache = std::move(cache);
+    tracer->m_samplerTables = std::move(tables->tables);
+    return tracer;
+}
+
+util::Result<std::vector<CpuPathTracer::ResolvedMaterial>>
+CpuPathTracer::resolveMaterials(const scene::Scene& scene) {
     // The default material sits after the scene's: bvh.cpp gives objects whose material id is
     // unknown the index materials.size().
-    std::vector<scene::Material> all = scene->materials;
+    std::vector<scene::Material> all = scene.materials;
     all.push_back(scene::Material{});
+    std::vector<ResolvedMaterial> materials;
     for (size_t i = 0; i < all.size(); ++i) {
         const scene::Material& m = all[i];
         const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
         if (!brdf)
-            return util::makeError(ErrorKind::Unsupported, "",
+            return util::makeError(util::ErrorKind::Unsupported, "",
                                    "material '" + m.name + "' uses unknown BRDF '" + m.brdf + "'",
                                    "/materials/" + std::to_string(i) + "/brdf");
         materials.push_back({brdf, plugins::BrdfParams{m.baseColor, m.roughness}, m.emission});
     }
-    // Direction-sampler tables for the materials some object uses (bvh.cpp's resolution: an
-    // unknown material id is the default, last), built once for the scene (DESIGN.md §7).
-    std::shared_ptr<const DirectionSamplerTables> tables;
-    if (options.sampler != SamplerKind::Bsdf) {
-        std::vector<bool> used(all.size(), false);
-        for (const scene::Object& obj : scene->objects) {
-            size_t index = all.size() - 1;
-            for (size_t i = 0; i + 1 < all.size(); ++i)
-                if (all[i].id == obj.materialId) {
-                    index = i;
-                    break;
-                }
-            used[index] = true;
-        }
-        std::vector<SamplerMaterial> samplerMaterials;
-        for (size_t i = 0; i < all.size(); ++i)
-            if (used[i]) {
-                materials[i].samplerIndex = int(samplerMaterials.size());
-                samplerMaterials.push_back({all[i].name, materials[i].brdf, materials[i].params});
-            }
-        tables = DirectionSamplerTables::build(scene->lighting.environment,
-                                               std::move(samplerMaterials), options.sampler);
-    }
-    if (threadCount <= 0) threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
-    std::unique_ptr<CpuPathTracer> tracer(new CpuPathTracer(
-        std::move(scene), std::move(bvh), options, std::move(materials), threadCount));
-    tracer->m_samplerTables = std::move(tables);
-    return tracer;
+    return materials;
+}
+
+void CpuPathTracer::setSamplerIndices(std::vector<ResolvedMaterial>& materials,
+                                      const std::vector<int>& samplerIndexOfMaterial) {
+    for (size_t i = 0; i < materials.size(); ++i)
+        materials[i].samplerIndex = samplerIndexOfMaterial[i];
+}
+
+util::Status CpuPathTracer::setScene(std::shared_ptr<const scene::Scene> scene,
+                                     std::shared_ptr<const scene::Bvh> bvh) {
+    using util::ErrorKind;
+    if (!scene || !bvh)
+        return util::makeError(ErrorKind::Invalid, "", "CPU tracer needs a scene and its BVH");
+    // A scene the tracer cannot render (unknown BRDF) leaves it, and its cache, as they were.
+    auto materials = resolveMaterials(*scene);
+    if (!materials)
+        return materials.error();
+    auto tables = m_samplerCache.update(*scene, m_options.sampler);
+    if (!tables)
+        return tables.error();
+    setSamplerIndices(*materials, tables->samplerIndexOfMaterial);
+    m_scene = std::move(scene);
+    m_bvh = std::move(bvh);
+    m_materials = std::move(materials.value());
+    m_camera = CpuCamera(m_scene->camera, m_options.width, m_options.height);
+    m_environment = CpuEnvironment(m_scene->lighting.environment);
+    m_lights = LightSet(m_scene->lighting.lights);
+    m_samplerTables = std::move(tables->tables);
+    m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
+    resetAccumulation();
+    return util::okStatus();
 }
 
 CpuPathTracer::CpuPathTracer(std::shared_ptr<const scene::Scene> scene,

@@ -9,8 +9,10 @@
 // with BSDF sampling (light_set.h; docs/estimator.md "Analytic lights"). Direction samplers
 // (RenderOptions::sampler, issue 6): `bsdf` draws from the material's plugin with (u1, u2), the
 // draw order the Vulkan tracer shares; every other kind (uniform, cosine, env, mis, wavelet,
-// oracle) draws from a DirectionSampler (direction_sampler.h) with (u1, u2, u3), its tables built
-// once at create() for the materials the scene's objects use. sampleScatter/scatterPdf are the one
+// oracle) draws from a DirectionSampler (direction_sampler.h) with (u1, u2, u3), its tables held
+// by a SamplerTablesCache: built at create() for the materials the scene's objects use, and on
+// setScene() rebuilt only where the new scene invalidates them (an object move rebuilds none,
+// DESIGN.md §5). sampleScatter/scatterPdf are the one
 // place that draws the next direction and the one pdf the MIS weights of analytic lights use, so
 // a light hit by a sampled direction is weighted with the pdf of the sampler actually used.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.
@@ -22,6 +24,7 @@
 #include "render/integrator.h"
 #include "render/light_set.h"
 #include "render/render_options.h"
+#include "render/sampler_tables_cache.h"
 #include "scene/bvh.h"
 #include "scene/scene.h"
 
@@ -52,6 +55,14 @@ public:
     void resetAccumulation() override;
     std::string deviceName() const override;
     IntegratorTimings timings() const override { return m_timings; }
+    // Swaps in a new scene and BVH (same options), rebuilding the sampler tables the change
+    // invalidates, and restarts accumulation. Errors as create()'s; on error nothing changes.
+    util::Status setScene(std::shared_ptr<const scene::Scene> scene,
+                          std::shared_ptr<const scene::Bvh> bvh) override;
+    std::shared_ptr<const DirectionSamplerTables> samplerTables() const override {
+        return m_samplerTables;
+    }
+    SamplerTablesRebuilds samplerRebuilds() const override { return m_samplerCache.rebuilds(); }
 
     // One path through pixel (x, y) in pass `pass`: the estimator's single-sample radiance.
     // Deterministic: a function of (seed, pass, pixel) only. Public so tests (and GPU-vs-CPU
@@ -79,6 +90,10 @@ private:
     CpuPathTracer(std::shared_ptr<const scene::Scene> scene, std::shared_ptr<const scene::Bvh> bvh,
                   const RenderOptions& options, std::vector<ResolvedMaterial> materials,
                   int threadCount);
+    // The scene's materials plus the default (last); errors: unknown BRDF plugin.
+    static util::Result<std::vector<ResolvedMaterial>> resolveMaterials(const scene::Scene& scene);
+    static void setSamplerIndices(std::vector<ResolvedMaterial>& materials,
+                                  const std::vector<int>& samplerIndexOfMaterial);
     const ResolvedMaterial& material(float index) const;
 
     // The direction-sampling step (local shading frame, solid-angle pdf). `ds` is the vertex's
@@ -110,7 +125,8 @@ private:
     CpuCamera m_camera;
     CpuEnvironment m_environment;
     LightSet m_lights;
-    // Direction-sampler tables (nullptr for `bsdf`): built once per scene in create().
+    // Direction-sampler tables (nullptr for `bsdf`), from m_samplerCache for the current scene.
+    SamplerTablesCache m_samplerCache;
     std::shared_ptr<const DirectionSamplerTables> m_samplerTables;
     LightStrategy m_lightStrategy = LightStrategy::Mis;
     int m_threadCount;

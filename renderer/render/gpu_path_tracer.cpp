@@ -1,5 +1,6 @@
 #include "render/gpu_path_tracer.h"
 
+#include "render/gpu_sampler_data.h"
 #include "render/gpu_scene_data.h"
 #include "render/integrator_factory.h"
 #include "util/log.h"
@@ -12,6 +13,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
 #include <vector>
 
 #ifndef WAVELIT_SHADER_DIR
@@ -36,7 +38,11 @@ enum Binding : uint32_t {
     kMaterials,
     kEnvironment,
     kAccumulation,
-    kLights
+    kLights,
+    // With WAVELIT_DIRECTION_SAMPLERS only (gpu_sampler_data.h):
+    kEnvTable,
+    kSamplerMaterials,
+    kSamplerWords
 };
 
 struct PassPush {
@@ -59,6 +65,10 @@ public:
     void resetAccumulation() override;
     std::string deviceName() const override { return "vulkan: " + m_context->deviceName(); }
     IntegratorTimings timings() const override { return m_timings; }
+    std::shared_ptr<const DirectionSamplerTables> samplerTables() const override {
+        return m_samplerTables.tables;
+    }
+    SamplerTablesRebuilds samplerRebuilds() const override { return m_tablesCache.rebuilds(); }
     int validationMessageCount() const override { return m_context->validationMessageCount(); }
     util::Status setScene(std::shared_ptr<const scene::Scene> scene,
                           std::shared_ptr<const scene::Bvh> bvh) override;
@@ -70,6 +80,7 @@ private:
     // Packs and uploads scene + BVH into fresh buffers, then swaps them in and rebinds: on error
     // the previous scene stays intact. No dispatch is in flight (renderPass waits).
     util::Status uploadScene(const scene::Scene& scene, const scene::Bvh& bvh);
+    bool usesDirectionSamplers() const { return m_options.sampler != SamplerKind::Bsdf; }
 
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
@@ -78,7 +89,10 @@ private:
     // (which waits for the last submit) runs before any buffer goes away.
     std::unique_ptr<vk::Context> m_context;
     vk::Buffer m_params, m_nodes, m_triangles, m_materials, m_environment, m_accumulation,
-        m_lights;
+        m_lights, m_envTable, m_samplerMaterials, m_samplerWords;
+    // Direction-sampler tables, rebuilt per change set only where invalidated.
+    SamplerTablesCache m_tablesCache;
+    SceneSamplerTables m_samplerTables;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
@@ -110,10 +124,10 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_options = options;
     pt->m_timings.bvhBuildSeconds = pt->m_bvh->buildSeconds;
 
-    if (options.sampler != SamplerKind::Bsdf)
+    if (options.sampler == SamplerKind::Oracle)
         return util::makeError(util::ErrorKind::Unsupported, "",
-                               std::string("sampler '") + samplerKindName(options.sampler) +
-                                   "' is not implemented yet on Vulkan (issue 6)");
+                               "sampler 'oracle' runs on the CPU only (its dense per-point "
+                               "product at full resolution has no GPU form; use --device cpu)");
     // Fail on an unsupported material before any device work.
     if (auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options); !packed)
         return packed.error();
@@ -123,6 +137,11 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!ctx)
         return ctx.error();
     pt->m_context = std::move(ctx.value());
+    if (pt->usesDirectionSamplers() && !pt->m_context->hasFloat64())
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               pt->m_context->deviceName() + ": sampler '" +
+                                   samplerKindName(options.sampler) +
+                                   "' needs shaderFloat64 (double-precision sampling descents)");
     // Instance + device creation is reported apart from the pipeline (it is not shader work).
     util::logInfo("vulkan device: " + pt->m_context->deviceName() + " (created in " +
                   std::to_string(int(timer.milliseconds())) + " ms)");
@@ -132,20 +151,20 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     vk::ShaderCompileOptions compile{{gpuShaderDirectory(), gpuPluginDirectory()},
                                      {"WAVELIT_WORKGROUP_X=" + std::to_string(kWorkgroupX),
                                       "WAVELIT_WORKGROUP_Y=" + std::to_string(kWorkgroupY)}};
+    // `bsdf` compiles without the samplers: no private product pyramid, no doubles.
+    if (pt->usesDirectionSamplers())
+        compile.defines.push_back("WAVELIT_DIRECTION_SAMPLERS=1");
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     auto spirv = vk::compileComputeShaderFile(shaderPath, compile);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
+    std::vector<BindingKind> bindings(pt->usesDirectionSamplers() ? 10 : 7,
+                                      BindingKind::StorageBuffer);
+    bindings[kParams] = BindingKind::UniformBuffer;
     auto kernel = vk::ComputeKernel::create(
-        *pt->m_context,
-        {"path_tracer",
-         std::move(spirv.value()),
-         {BindingKind::UniformBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer,
-          BindingKind::StorageBuffer, BindingKind::StorageBuffer, BindingKind::StorageBuffer,
-          BindingKind::StorageBuffer},
-         sizeof(PassPush)});
+        *pt->m_context, {"path_tracer", std::move(spirv.value()), bindings, sizeof(PassPush)});
     if (!kernel)
         return kernel.error();
     pt->m_kernel = std::move(kernel.value());
@@ -175,7 +194,23 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     auto packed = packGpuScene(scene, bvh, m_options);
     if (!packed)
         return packed.error();
-    const GpuSceneData& d = *packed;
+    GpuSceneData& d = *packed;
+    GpuSamplerData samplers;
+    SceneSamplerTables samplerTables;
+    if (usesDirectionSamplers()) {
+        auto tables = m_tablesCache.update(scene, m_options.sampler);
+        if (!tables)
+            return tables.error();
+        samplerTables = std::move(tables.value());
+        auto packedSamplers = packGpuSamplers(samplerTables, m_options.sampler, d.materials.size());
+        if (!packedSamplers)
+            return packedSamplers.error();
+        samplers = std::move(packedSamplers.value());
+        d.params.samplerInfo[0] = samplers.kind;
+        d.params.samplerInfo[1] = samplers.lit ? 1u : 0u;
+        d.params.samplerInfo[2] = samplers.tailOffset;
+        d.params.samplerEnv[0] = samplers.envMean;
+    }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     struct Upload {
         uint32_t binding;
@@ -197,9 +232,18 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
          kStorage, "environment"},
         {kLights, &m_lights, d.lights.data(), d.lights.size() * sizeof(GpuLight), kStorage,
          "lights"},
+        {kEnvTable, &m_envTable, samplers.envNodes.data(),
+         samplers.envNodes.size() * sizeof(samplers.envNodes[0]), kStorage, "env sampling table"},
+        {kSamplerMaterials, &m_samplerMaterials, samplers.materials.data(),
+         samplers.materials.size() * sizeof(GpuSamplerMaterial), kStorage, "sampler materials"},
+        {kSamplerWords, &m_samplerWords, samplers.words.data(),
+         samplers.words.size() * sizeof(uint32_t), kStorage, "sampler tables"},
     };
+    // The first six are the scene's; the last three exist only with direction samplers.
+    const size_t uploadCount = usesDirectionSamplers() ? std::size(uploads) : 6;
     std::vector<vk::Buffer> fresh;
-    for (const Upload& u : uploads) {
+    for (size_t i = 0; i < uploadCount; ++i) {
+        const Upload& u = uploads[i];
         auto buffer = upload(u.data, u.bytes, u.usage, u.name);
         if (!buffer)
             return buffer.error();
@@ -209,6 +253,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         *uploads[i].target = std::move(fresh[i]);
         m_kernel.bind(uploads[i].binding, *uploads[i].target);
     }
+    m_samplerTables = std::move(samplerTables);
     return util::okStatus();
 }
 

@@ -3,6 +3,7 @@
 // Not thread-safe: owned and driven by one thread (the render thread or the CLI's main thread).
 #pragma once
 
+#include "render/sampler_tables_cache.h"
 #include "util/image.h"
 #include "util/result.h"
 
@@ -43,6 +44,11 @@ public:
                                   std::shared_ptr<const scene::Bvh> /*bvh*/) {
         return util::makeError(util::ErrorKind::Unsupported, "", "setScene not supported");
     }
+    // The direction samplers' tables in use (render report, DESIGN.md §7): nullptr for `bsdf` and
+    // for integrators that build none.
+    virtual std::shared_ptr<const DirectionSamplerTables> samplerTables() const { return nullptr; }
+    // What the integrator's SamplerTablesCache built and reused since it was created.
+    virtual SamplerTablesRebuilds samplerRebuilds() const { return {}; }
 };
 
 } // namespace wavelit::render

@@ -104,6 +104,8 @@ RenderStats RenderSession::stats() const {
     s.timings = m_integrator->timings();
     s.deviceName = m_integrator->deviceName();
     s.validationMessages = m_integrator->validationMessageCount();
+    s.samplerTables = m_integrator->samplerTables();
+    s.samplerRebuilds = m_integrator->samplerRebuilds();
     return s;
 }
 

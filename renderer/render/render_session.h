@@ -20,6 +20,10 @@ struct RenderStats {
     IntegratorTimings timings;
     std::string deviceName;
     int validationMessages = 0;
+    // The direction samplers' tables in use (nullptr for `bsdf`) and what setScene rebuilt or
+    // reused since the integrator was created: the render report's "samplerTables".
+    std::shared_ptr<const DirectionSamplerTables> samplerTables;
+    SamplerTablesRebuilds samplerRebuilds;
 };
 
 class RenderSession {
@@ -36,8 +40,10 @@ public:
     RenderStats stats() const;
     const RenderOptions& options() const { return m_options; }
 
-    // Replaces the scene (after an edit) and restarts accumulation. Rebuilds only what changed
-    // once change sets are wired (issue 5/6); for now the BVH and uploads are rebuilt.
+    // Replaces the scene (after an edit) and restarts accumulation. The BVH is rebuilt; an
+    // integrator that can swap scenes keeps its device and rebuilds only the sampler tables the
+    // edit invalidates (the CPU tracer: env change -> env + product tables, material edit -> that
+    // material's, object move -> none); otherwise the integrator is recreated.
     util::Status setScene(const scene::Scene& scene);
     void resetAccumulation();
 

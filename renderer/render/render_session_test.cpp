@@ -59,15 +59,30 @@ TEST(RenderSession, DefaultSceneRendersOnVulkanWithoutValidationMessages) {
     EXPECT_NE(stats.deviceName.find("vulkan"), std::string::npos);
 }
 
-TEST(RenderSession, SamplerNotOnVulkanYetIsUnsupported) {
+TEST(RenderSession, OracleIsCpuOnlyAndAutoRendersItOnTheCpu) {
     scene::Material mat;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 8, 4);
     RenderOptions o = smallVulkan();
-    o.sampler = SamplerKind::Wavelet;
+    o.sampler = SamplerKind::Oracle;
     auto session = RenderSession::create(*scene, o);
     ASSERT_FALSE(session.ok());
     EXPECT_EQ(session.error().kind, util::ErrorKind::Unsupported);
-    EXPECT_NE(session.error().message().find("issue 6"), std::string::npos);
+    EXPECT_NE(session.error().message().find("CPU only"), std::string::npos);
+    o.device = DeviceChoice::Auto;
+    o.width = o.height = 4;
+    auto fallback = RenderSession::create(*scene, o);
+    ASSERT_TRUE(fallback.ok()) << fallback.error().message();
+    EXPECT_EQ((*fallback)->stats().deviceName.find("vulkan"), std::string::npos);
+    // Every other sampler runs on Vulkan.
+    for (SamplerKind kind : {SamplerKind::Uniform, SamplerKind::Cosine, SamplerKind::Bsdf,
+                             SamplerKind::Env, SamplerKind::Mis, SamplerKind::Wavelet}) {
+        o.device = DeviceChoice::Vulkan;
+        o.sampler = kind;
+        auto onGpu = RenderSession::create(*scene, o);
+        ASSERT_TRUE(onGpu.ok()) << samplerKindName(kind) << ": " << onGpu.error().message();
+        ASSERT_TRUE((*onGpu)->renderPass().ok());
+        EXPECT_EQ((*onGpu)->stats().validationMessages, 0) << samplerKindName(kind);
+    }
 }
 
 TEST(RenderSession, AutoFallsBackToCpuOnlyWithoutAUsableVulkanDevice) {

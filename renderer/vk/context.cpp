@@ -210,6 +210,9 @@ util::Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt
     queueInfo.pQueuePriorities = &priority;
     VkPhysicalDeviceFeatures enabled{};
     enabled.shaderInt64 = VK_TRUE;
+    // Doubles carry the sampling descents' random numbers (shaders/common/env_table.glsl).
+    enabled.shaderFloat64 = features.shaderFloat64;
+    ctx->m_float64 = features.shaderFloat64 == VK_TRUE;
     VkDeviceCreateInfo deviceInfo{};
     deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     deviceInfo.queueCreateInfoCount = 1;

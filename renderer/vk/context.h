@@ -45,6 +45,8 @@ public:
     uint32_t queueFamily() const { return m_queueFamily; }
     const std::string& deviceName() const { return m_deviceName; }
     const VkPhysicalDeviceLimits& limits() const { return m_limits; }
+    // shaderFloat64 is enabled when the device has it (the direction samplers need it).
+    bool hasFloat64() const { return m_float64; }
     bool validationEnabled() const { return m_messenger != VK_NULL_HANDLE; }
     // Warnings + errors reported by the validation layers since creation.
     int validationMessageCount() const { return m_validationMessages.load(); }
@@ -72,6 +74,7 @@ private:
     uint32_t m_queueFamily = 0;
     std::string m_deviceName;
     VkPhysicalDeviceLimits m_limits{};
+    bool m_float64 = false;
     VkPhysicalDeviceMemoryProperties m_memory{};
     PFN_vkSetDebugUtilsObjectNameEXT m_setObjectName = nullptr;
     std::atomic<int> m_validationMessages{0};

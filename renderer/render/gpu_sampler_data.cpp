@@ -1,0 +1,74 @@
+#include "render/gpu_sampler_data.h"
+
+#include <bit>
+#include <string>
+
+namespace wavelit::render {
+
+size_t GpuSamplerData::bytes() const {
+    return envNodes.size() * sizeof(envNodes[0]) + materials.size() * sizeof(GpuSamplerMaterial) +
+           words.size() * sizeof(uint32_t);
+}
+
+util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
+                                             size_t gpuMaterialCount) {
+    if (kind == SamplerKind::Oracle)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               "sampler 'oracle' runs on the CPU only (a dense per-point product "
+                               "at full resolution has no GPU form; use --device cpu)");
+    GpuSamplerData d;
+    d.kind = uint32_t(kind);
+    d.materials.assign(gpuMaterialCount, GpuSamplerMaterial{});
+    d.envNodes.push_back({});
+    if (tables.tables) {
+        const DirectionSamplerTables& t = *tables.tables;
+        const SamplerEnvironment& env = t.environment();
+        d.lit = env.hasLight();
+        d.envMean = float(env.cellAverage(0, 0, 0));
+        if (d.lit)
+            d.envNodes = env.fine().table();
+        for (size_t i = 0; i < gpuMaterialCount && i < tables.samplerIndexOfMaterial.size(); ++i) {
+            const int index = tables.samplerIndexOfMaterial[i];
+            if (index < 0)
+                continue;
+            const MaterialProductTables* product = t.productTables(size_t(index));
+            if (!product)
+                continue; // kinds other than wavelet: the material needs nothing
+            const ProductPolicy& policy = product->policy();
+            GpuSamplerMaterial& g = d.materials[i];
+            g.mixBsdf = float(policy.mixBsdf);
+            g.capHalfAngle = float(policy.capHalfAngle);
+            g.aroundNormal = policy.aroundNormal ? 1u : 0u;
+            if (policy.mode == ProductMode::BsdfLobe) {
+                g.mode = kGpuSamplerBsdfLobe;
+                continue;
+            }
+            if (policy.productLevel < 1)
+                return util::makeError(util::ErrorKind::Unsupported, "",
+                                       "material '" + t.material(size_t(index)).name +
+                                           "': product level " +
+                                           std::to_string(policy.productLevel) +
+                                           " (the GPU needs at least 1)");
+            const FlatProductTables flat = product->flatten();
+            g.mode = kGpuSamplerProduct;
+            g.tableOffset = uint32_t(d.words.size());
+            d.words.insert(d.words.end(), flat.header.begin(), flat.header.end());
+            g.nodeOffset = uint32_t(d.words.size());
+            d.words.insert(d.words.end(), flat.nodeWords.begin(), flat.nodeWords.end());
+            g.scalingOffset = uint32_t(d.words.size());
+            for (float s : flat.scaling)
+                d.words.push_back(std::bit_cast<uint32_t>(s));
+        }
+        d.tailOffset = uint32_t(d.words.size());
+        const int side = 1 << kGpuTailLevel;
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x)
+                d.words.push_back(
+                    std::bit_cast<uint32_t>(float(env.cellAverage(kGpuTailLevel, x, y))));
+    }
+    if (d.words.empty())
+        d.words.push_back(0);
+    return d;
+}
+
+} // namespace wavelit::render

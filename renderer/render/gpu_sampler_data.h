@@ -1,0 +1,62 @@
+// The direction samplers' tables as the Vulkan tracer reads them (shaders/common/
+// direction_sampler.glsl, env_table.glsl), packed on the CPU so the layout can be tested without a
+// device. Three buffers:
+//   envNodes   the env's HierarchicalSampler float tables, as they are (16 bytes per node)
+//   materials  one GpuSamplerMaterial per GPU material (scene materials, then the default)
+//   words      every used material's flat product tables (MaterialProductTables::flatten(): header,
+//              node words, scaling floats, each at its own offset), then the env's 16 x 16 cell
+//              averages as float bits at tailOffset (the mixture's tail estimate; 8 x 8)
+#pragma once
+
+#include "render/render_options.h"
+#include "render/sampler_tables_cache.h"
+#include "util/result.h"
+#include "wavelet/hierarchical_sampler.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wavelit::render {
+
+// SamplerMaterial.mode codes shared with direction_sampler.glsl.
+inline constexpr uint32_t kGpuSamplerBsdfOnly = 0;
+inline constexpr uint32_t kGpuSamplerProduct = 1;
+inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
+// The finest product level the shader forms per hit (2^4 x 2^4 leaves; finer table details are
+// not synthesised: the env's quadtree refines below the leaves) and the tail estimate's cells
+// (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
+inline constexpr int kGpuMaxProductLevel = 4;
+inline constexpr int kGpuTailLevel = 3;
+
+// Mirrors `struct SamplerMaterial` in path_tracer.comp (std430).
+struct GpuSamplerMaterial {
+    uint32_t mode = kGpuSamplerBsdfOnly;
+    uint32_t tableOffset = 0;   // word offset of the flat header
+    uint32_t nodeOffset = 0;    // word offset of its node words
+    uint32_t scalingOffset = 0; // word offset of its scaling floats
+    float mixBsdf = 0.0f;       // defensive bsdf share with the product
+    float capHalfAngle = 0.0f;  // lobe cap (tail estimate without a product)
+    uint32_t aroundNormal = 0;  // 1: the product's axis is the normal (Lambert)
+    uint32_t pad = 0;
+};
+static_assert(sizeof(GpuSamplerMaterial) == 32);
+static_assert(sizeof(wavelet::HierarchicalSampler::TableNode) == 16);
+
+struct GpuSamplerData {
+    uint32_t kind = 0; // SamplerKind as its integer code
+    bool lit = false;
+    float envMean = 0.0f;
+    uint32_t tailOffset = 0;
+    std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty
+    std::vector<GpuSamplerMaterial> materials;                     // never empty
+    std::vector<uint32_t> words;                                   // never empty
+    size_t bytes() const;
+};
+
+// `tables` from SamplerTablesCache::update; gpuMaterialCount = scene materials + 1 (the
+// default). Errors (Unsupported): `oracle` (its dense per-point product has no GPU form) and a
+// product level below 1.
+util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
+                                             size_t gpuMaterialCount);
+
+} // namespace wavelit::render
