@@ -43,7 +43,7 @@ TEST(RenderCli, VulkanExrMatchesCpuReference) {
                           "' --device vulkan --width " + std::to_string(size) + " --height " +
                           std::to_string(size) + " --spp " + std::to_string(spp) + " --seed " +
                           std::to_string(seed) + " --bounces " + std::to_string(bounces) +
-                          " --report '" + (dir / "report.json").string() + "'";
+                          " --sampler mis --report '" + (dir / "report.json").string() + "'";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     auto gpu = scene::loadImage(out.string(), {false});
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
@@ -55,6 +55,8 @@ TEST(RenderCli, VulkanExrMatchesCpuReference) {
     options.seed = seed;
     options.bounces = bounces;
     options.device = render::DeviceChoice::Cpu;
+    // `mis`: a sampler whose GPU form is a twin of the CPU's (the same numbers, the same paths).
+    options.sampler = render::SamplerKind::Mis;
     auto session = render::RenderSession::create(*scene, options);
     ASSERT_TRUE(session.ok()) << session.error().message();
     for (int i = 0; i < spp; ++i)

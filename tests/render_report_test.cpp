@@ -121,9 +121,10 @@ TEST(RenderReport, BsdfBuildsNoTablesAndTheDefaultSaysSo) {
     ASSERT_TRUE(chosen.contains("samplerTables"));
     EXPECT_TRUE(chosen.at("samplerTables").is_null()) << chosen.dump(2);
     EXPECT_EQ(samplerReason(chosen), "chosen with --sampler");
+    // No --sampler: the CLI's default, the wavelet product sampler, with its tables.
     const json byDefault = renderReport("default", "");
-    EXPECT_EQ(byDefault.at("sampler"), "bsdf");
-    EXPECT_TRUE(byDefault.at("samplerTables").is_null());
+    EXPECT_EQ(byDefault.at("sampler"), "wavelet");
+    EXPECT_FALSE(byDefault.at("samplerTables").is_null());
     EXPECT_NE(samplerReason(byDefault).find("default"), std::string::npos)
         << samplerReason(byDefault);
 }

@@ -22,7 +22,7 @@ QString defaultScenePath() {
 QString editorUsage() {
     return QStringLiteral(
         "usage: wavelit [SCENE.wlscene] [--script FILE.js] [--device auto|vulkan|cpu]\n"
-        "               [--size WxH] [--max-spp N] [--validation]\n"
+        "               [--sampler NAME] [--size WxH] [--max-spp N] [--validation]\n"
         "With no scene, opens the bundled default scene (%1).\n")
         .arg(defaultScenePath());
 }
@@ -36,7 +36,8 @@ util::Result<EditorOptions> parseEditorOptions(const QStringList& arguments) {
             if (i + 1 >= arguments.size()) return std::nullopt;
             return arguments[++i];
         };
-        if (arg == "--script" || arg == "--device" || arg == "--size" || arg == "--max-spp") {
+        if (arg == "--script" || arg == "--device" || arg == "--sampler" || arg == "--size" ||
+            arg == "--max-spp") {
             auto value = next();
             if (!value) return usage(arg + " needs a value");
             if (arg == "--script") {
@@ -45,6 +46,10 @@ util::Result<EditorOptions> parseEditorOptions(const QStringList& arguments) {
                 auto device = render::parseDeviceChoice(value->toStdString());
                 if (!device) return device.error();
                 options.render.device = *device;
+            } else if (arg == "--sampler") {
+                auto sampler = render::parseSamplerKind(value->toStdString());
+                if (!sampler) return sampler.error();
+                options.render.sampler = *sampler;
             } else if (arg == "--size") {
                 static const QRegularExpression pattern("^(\\d{1,5})x(\\d{1,5})$");
                 auto match = pattern.match(*value);

@@ -37,6 +37,7 @@ void RenderController::render(std::shared_ptr<const scene::Scene> scene, const Q
         job.options.bounces = scene->render.bounces;
     }
     job.options.device = m_settings.device;
+    job.options.sampler = m_settings.sampler;
     job.options.validation = m_settings.validation;
     job.scene = std::move(scene);
     job.scenePath = scenePath.toStdString();

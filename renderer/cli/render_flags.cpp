@@ -16,6 +16,9 @@ const std::set<std::string>& renderValueFlags() {
 util::Result<render::RenderOptions> renderOptionsFromArgs(const Args& args,
                                                           const scene::RenderDefaults& defaults) {
     render::RenderOptions o;
+    // The CLI's default sampler is the wavelet product sampler (DESIGN.md §5.B); the library's
+    // RenderOptions default stays `bsdf`, the cheapest, for code that does not choose.
+    o.sampler = render::SamplerKind::Wavelet;
     auto width = args.intValue("--width", defaults.width, 1, kMaxImageSide);
     if (!width) return width.error();
     auto height = args.intValue("--height", defaults.height, 1, kMaxImageSide);

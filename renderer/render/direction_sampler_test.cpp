@@ -70,10 +70,6 @@ glm::vec3 reflectionOf(const ShadingPoint& p) {
     return 2.0f * glm::dot(p.wo, p.n) * p.n - p.wo;
 }
 
-struct EnvCase {
-    std::string name;
-    std::shared_ptr<const DirectionSamplerTables> tables[kKinds];
-};
 
 std::vector<SamplerMaterial> configMaterials() {
     std::vector<SamplerMaterial> m;
@@ -82,31 +78,42 @@ std::vector<SamplerMaterial> configMaterials() {
     return m;
 }
 
-// Built once: the soft studio env (rotated 30 degrees) and a sky with a sun 1e6 x the sky mean
-// placed 8 degrees from the glossy configuration's reflection vector.
-const std::vector<EnvCase>& envCases() {
-    static const std::vector<EnvCase> cases = [] {
-        std::vector<scene::Environment> envs;
+// The soft studio env (rotated 30 degrees) and a sky with a sun 1e6 x the sky mean placed 8
+// degrees from the glossy configuration's reflection vector.
+scene::Environment testEnvironment(int e) {
+    if (e == 0) {
         auto studio = loadDownsampledEnvironment(
             std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/studio.exr", 256);
         EXPECT_TRUE(studio.ok());
-        envs.push_back(studio.ok() ? *studio : scene::Environment{});
-        envs.back().rotationDeg = 30.0f;
-        const glm::vec3 r = reflectionOf(shadingPoint(kConfigList[3], 3));
-        const glm::vec3 sun = glm::normalize(r + glm::vec3(0.0f, 0.14f, 0.0f));
-        envs.push_back(makeSunSkyEnvironment(256, sun, 1e6));
-        std::vector<EnvCase> out;
-        const char* names[] = {"studio", "sun"};
-        for (int e = 0; e < kEnvs; ++e) {
-            EnvCase c;
-            c.name = names[e];
-            for (SamplerKind k : allSamplerKinds())
-                c.tables[int(k)] = DirectionSamplerTables::build(envs[size_t(e)], configMaterials(), k);
-            out.push_back(std::move(c));
+        scene::Environment env = studio.ok() ? *studio : scene::Environment{};
+        env.rotationDeg = 30.0f;
+        return env;
+    }
+    const glm::vec3 r = reflectionOf(shadingPoint(kConfigList[3], 3));
+    const glm::vec3 sun = glm::normalize(r + glm::vec3(0.0f, 0.14f, 0.0f));
+    return makeSunSkyEnvironment(256, sun, 1e6);
+}
+
+// Tables built on first use, per env and kind, all kinds of an env sharing one env build: each
+// test case runs in its own process, and building everything for every case was most of this
+// suite's run time.
+const DirectionSamplerTables& tablesFor(int e, SamplerKind kind) {
+    static std::shared_ptr<const DirectionSamplerTables> cache[kEnvs][kKinds];
+    static scene::Environment envs[kEnvs];
+    static bool loaded[kEnvs] = {};
+    auto& slot = cache[e][int(kind)];
+    if (!slot) {
+        if (!loaded[e]) {
+            envs[e] = testEnvironment(e);
+            loaded[e] = true;
         }
-        return out;
-    }();
-    return cases;
+        const DirectionSamplerTables* previous = nullptr;
+        for (const auto& other : cache[e])
+            if (other)
+                previous = other.get();
+        slot = DirectionSamplerTables::build(envs[e], configMaterials(), kind, previous);
+    }
+    return *slot;
 }
 
 struct Param {
@@ -135,7 +142,7 @@ std::vector<Param> allParams() {
 class DirectionSamplerTest : public testing::TestWithParam<Param> {
 protected:
     const DirectionSamplerTables& tables() const {
-        return *envCases()[size_t(GetParam().env)].tables[int(GetParam().kind)];
+        return tablesFor(GetParam().env, GetParam().kind);
     }
     ShadingPoint point() const {
         return shadingPoint(kConfigList[GetParam().config], size_t(GetParam().config));
@@ -266,7 +273,7 @@ TEST(DirectionSampler, KindNamesRoundTrip) {
 }
 
 TEST(DirectionSampler, ReportNamesEveryMaterialChoice) {
-    const auto& t = *envCases()[1].tables[int(SamplerKind::Wavelet)];
+    const auto& t = tablesFor(1, SamplerKind::Wavelet);
     const std::string report = t.report();
     for (const Config& c : kConfigList)
         EXPECT_NE(report.find(c.name), std::string::npos) << report;

@@ -12,8 +12,9 @@ namespace wavelit::render {
 enum class DeviceChoice { Auto, Vulkan, Cpu };
 
 // Direction samplers for the speed/error report (DESIGN.md §5.B). The CPU reference tracer runs all
-// of them (render/direction_sampler.h); the Vulkan tracer runs Bsdf only so far (issue 6) and
-// reports Unsupported for the rest, on which Auto falls back to the CPU tracer.
+// of them (render/direction_sampler.h); the Vulkan tracer all but Oracle (a dense full-resolution
+// product per point), for which it reports Unsupported and Auto falls back to the CPU tracer.
+// The CLI and the editor default to Wavelet; RenderOptions' own default is Bsdf (no tables).
 enum class SamplerKind { Uniform, Cosine, Bsdf, Env, Mis, Wavelet, Oracle };
 
 util::Result<DeviceChoice> parseDeviceChoice(const std::string& text);
