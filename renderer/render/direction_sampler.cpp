@@ -18,10 +18,14 @@ constexpr double kMisWeight = 0.5;
 // The oracle's defensive share: small, so it stays close to the ideal, but non-zero so tails
 // outside its window (and cells the dense grid saw as zero) keep support.
 constexpr double kOracleBsdf = 0.05;
-constexpr double kOracleCapPerAlpha = 6.0; // 3 lobe half-widths of 2 alpha (env_product_tables)
+// 3 lobe half-widths of 2 alpha: the wavelet policy's former cap (it now covers 4.5), kept so the
+// oracle's figures stay comparable across the variance study's runs (docs/sampler-variance.md).
+constexpr double kOracleCapPerAlpha = 6.0;
 // The env share of the product mixtures: never 0 (full support for bright tails the estimates
 // below miss) and never all (the lobe technique keeps most of its samples).
-constexpr double kMinEnvShare = 0.05, kMaxEnvShare = 0.8;
+// (0.05 before the lobe refinement: every defensive share c costs ~c in Var/I^2 where the lobe
+// technique is good, docs/sampler-variance.md.)
+constexpr double kMinEnvShare = 0.02, kMaxEnvShare = 0.8;
 constexpr int kLobeStrata = 4;
 constexpr int kTailLevel = 4; // 16^2 cells: the tail estimate costs 256 BRDF evaluations
 
@@ -188,10 +192,30 @@ void DirectionSampler::addProduct(SamplerKind kind) {
         } else {
             const int bin = tables->binOf(axis);
             const ProductWindow window = tables->window(bin);
-            const wavelet::SquareGrid brdfGrid =
-                windowTabulate(env.map(), window, policy.productLevel, brdfCosLocal, 2);
+            // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
+            // the product's leaf masses are those of the product at 2x its resolution.
+            const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeighted(
+                env, window, policy.productLevel, brdfCosLocal, 2);
             m_product = EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
                                                        brdfGrid, policy.brdfKeep);
+            if (m_product) {
+                // The refinement's BRDF x cos, captured by value (the sampler may be moved).
+                const plugins::Brdf* brdf = m_material->brdf;
+                const plugins::BrdfParams params = m_material->params;
+                const glm::vec3 woLocal = m_woLocal;
+                const glm::dvec3 t = env.toLocal(glm::dvec3(m_point.t));
+                const glm::dvec3 bt = env.toLocal(glm::dvec3(m_point.b));
+                const glm::dvec3 nl = env.toLocal(glm::dvec3(m_point.n));
+                m_product->setLobeRefinement(
+                    [=](const glm::dvec3& d) {
+                        const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, bt)),
+                                          float(glm::dot(d, nl)));
+                        if (l.z <= 0.0f)
+                            return 0.0;
+                        return double(util::luminance(brdf->eval(params, woLocal, l) * l.z));
+                    },
+                    lobeRefineLevels(policy, window, env.level()));
+            }
             m_describe = m_product ? "wavelet product: " + policy.reason
                                    : "wavelet: all-zero product here, bsdf lobe";
         }

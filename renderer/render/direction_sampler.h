@@ -8,10 +8,11 @@
 //   mis      one-sample MIS of bsdf and env, 1/2 each: pdf = (p_bsdf + p_env) / 2, which is the
 //            balance heuristic in the one-sample model (f L cos / sum c_i p_i)
 //   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
-//            refined by the env pyramid, env_product_sampler.h) for the lobe, plus bsdf (0.1,
+//            refined below its leaves by BRDF-weighted env levels, then the env pyramid,
+//            env_product_sampler.h) for the lobe, plus bsdf (the policy's share, 0.03,
 //            defensive) and env sampling with a per-point share c_env ~ sqrt(M_tail) /
 //            (sqrt(M_tail) + sqrt(M_lobe)) (second moments estimated on 16^2 coarse cells /
-//            4x4 BSDF strata), clamped to [0.05, 0.8]: pdf = sum c_i p_i, so no direction with a
+//            4x4 BSDF strata), clamped to [0.02, 0.8]: pdf = sum c_i p_i, so no direction with a
 //            non-zero integrand has zero pdf. Lobes narrower than 2 env texels (policy BsdfLobe)
 //            use bsdf for the lobe + env with the same share rule; black env / all-zero
 //            product: bsdf alone.

@@ -14,6 +14,30 @@ namespace {
 
 constexpr double kFourPi = 4.0 * std::numbers::pi;
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
+// Lobe refinement: each child keeps at least this fraction of the largest child's BRDF weight,
+// so a child whose centre sees f cos = 0 (the horizon crossing it) keeps product support.
+constexpr double kLobeFloor = 0.02;
+
+// Picks the first of two parts (masses a, b) with u, rescaling u into [0, 1).
+inline int pickPart(double a, double b, double& u, double& probability) {
+    const double whole = a + b;
+    const double p0 = whole > 0.0 ? a / whole : 0.5;
+    if (u < p0) {
+        u = std::min(u / p0, kOneMinusEpsilon);
+        probability *= p0;
+        return 0;
+    }
+    const double p1 = 1.0 - p0;
+    u = std::min((u - p0) / p1, kOneMinusEpsilon);
+    probability *= p1;
+    return 1;
+}
+
+inline double partProbability(double a, double b, int part) {
+    const double whole = a + b;
+    const double p0 = whole > 0.0 ? a / whole : 0.5;
+    return part == 0 ? p0 : 1.0 - p0;
+}
 
 } // namespace
 
@@ -60,6 +84,32 @@ wavelet::SquareCell EnvProductSampler::globalLeaf(wavelet::SquareCell leaf) cons
     return {gl, gx, gy};
 }
 
+void EnvProductSampler::setLobeRefinement(std::function<double(const glm::dvec3&)> brdfCos,
+                                          int levels) {
+    m_brdfCos = std::move(brdfCos);
+    m_refineLevels = m_brdfCos ? std::max(0, levels) : 0;
+}
+
+int EnvProductSampler::refineStop(const wavelet::SquareCell& cell) const {
+    return std::min(cell.level + m_refineLevels, m_env->level());
+}
+
+void EnvProductSampler::childWeights(wavelet::SquareCell cell, double w[4]) const {
+    const int l = cell.level + 1;
+    const double side = std::ldexp(1.0, -l);
+    double h[4], hmax = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        const int cx = 2 * cell.x + (c & 1), cy = 2 * cell.y + (c >> 1);
+        h[c] = std::max(0.0, m_brdfCos(m_env->map().toDirection(0, {(cx + 0.5) * side,
+                                                                     (cy + 0.5) * side})));
+        hmax = std::max(hmax, h[c]);
+        w[c] = m_env->cellAverage(l, cx, cy);
+    }
+    if (hmax > 0.0 && std::isfinite(hmax))
+        for (int c = 0; c < 4; ++c)
+            w[c] *= h[c] + kLobeFloor * hmax;
+}
+
 double EnvProductSampler::integralSolidAngle() const {
     return m_product.clampedIntegral() * kFourPi * m_window.side() * m_window.side();
 }
@@ -74,7 +124,16 @@ wavelet::DirectionSample EnvProductSampler::sampleLocal(glm::dvec2 u) const {
         probability *= 0.25;
         leaf = {1, cx, cy};
     }
-    const wavelet::SquareSample s = m_env->fine().sampleWithin(globalLeaf(leaf), u);
+    wavelet::SquareCell cell = globalLeaf(leaf);
+    // Lobe refinement: row by u.y, then column by u.x given the row (as HierarchicalSampler).
+    for (const int stop = refineStop(cell); cell.level < stop;) {
+        double w[4];
+        childWeights(cell, w);
+        const int cy = pickPart(w[0] + w[1], w[2] + w[3], u.y, probability);
+        const int cx = pickPart(w[2 * cy], w[2 * cy + 1], u.x, probability);
+        cell = {cell.level + 1, 2 * cell.x + cx, 2 * cell.y + cy};
+    }
+    const wavelet::SquareSample s = m_env->fine().sampleWithin(cell, u);
     return {m_env->map().toDirection(0, s.point), probability * s.pdf / kFourPi};
 }
 
@@ -91,7 +150,18 @@ double EnvProductSampler::pdfLocal(const glm::dvec3& local) const {
         probability *= 0.25;
         leaf = {1, inWindow.x < 0.5 ? 0 : 1, inWindow.y < 0.5 ? 0 : 1};
     }
-    return probability * m_env->fine().pdfWithin(globalLeaf(leaf), p) / kFourPi;
+    wavelet::SquareCell cell = globalLeaf(leaf);
+    for (const int stop = refineStop(cell); cell.level < stop;) {
+        double w[4];
+        childWeights(cell, w);
+        const double scale = std::ldexp(1.0, cell.level + 1);
+        const int cx = std::clamp(int(p.x * scale) - 2 * cell.x, 0, 1);
+        const int cy = std::clamp(int(p.y * scale) - 2 * cell.y, 0, 1);
+        probability *= partProbability(w[0] + w[1], w[2] + w[3], cy) *
+                       partProbability(w[2 * cy], w[2 * cy + 1], cx);
+        cell = {cell.level + 1, 2 * cell.x + cx, 2 * cell.y + cy};
+    }
+    return probability * m_env->fine().pdfWithin(cell, p) / kFourPi;
 }
 
 } // namespace wavelit::render

@@ -21,10 +21,26 @@ constexpr double kPi = std::numbers::pi;
 constexpr uint32_t kFlatMagic = 0x31545057; // "WPT1"
 
 // GGX lobe half-width in wi: D(h) halves at theta_h ~ 0.64 alpha and wi turns twice as fast as
-// h, so ~1.3 alpha; 2 alpha keeps the shoulder. The cap covers three half-widths (capMap's
-// default coverage), the tail beyond it is the defensive techniques' job.
+// h, so ~1.3 alpha; 2 alpha keeps the shoulder. The cap covers 4.5 half-widths: GGX's tail falls
+// only as theta^-4, and beyond 3 half-widths it still held ~10% of the lobe, which the defensive
+// techniques sampled poorly (courtyard r = 0.2: Var/I^2 0.51 with 3, 0.13 with 4.5; the product's
+// resolution lost by the wider window is won back by the lobe refinement below its leaves).
 constexpr double kLobeWidthPerAlpha = 2.0;
-constexpr double kCapCoverage = 3.0;
+constexpr double kCapCoverage = 4.5;
+// Budgets (docs/sampler-variance.md): the env factor keeps 512 of a window's 1024 coefficients
+// (192 cost courtyard r = 0.2 2x in variance) and all of the whole sphere's (one table); the
+// per-point BRDF factor is not truncated (96 cost up to 1.9x: its truncation error lands on the
+// lobe's peak, and the sparse product of a full 32^2 factor costs ~20 us).
+constexpr size_t kEnvKeepWindow = 512;
+constexpr size_t kEnvKeepWhole = 1024;
+constexpr size_t kBrdfKeep = 1024;
+// Defensive BSDF share: with the product covering the lobe (and its tail), what the defensive
+// parts take is mostly lost (Var >= 1/c_product - 1 for a perfect product).
+constexpr double kMixBsdf = 0.03;
+// Lobe refinement below the product's leaves: BRDF-weighted env levels until a cell is narrower
+// than this fraction of the lobe half-width, at most kRefineMaxLevels (4 BRDF evaluations each).
+constexpr double kRefineCellPerLobe = 0.1;
+constexpr int kRefineMaxLevels = 3;
 // A lobe narrower than this many env texels sees an environment constant across it: BSDF
 // sampling is then near-ideal, and a product cannot resolve more than the env does.
 constexpr double kMinLobeInEnvTexels = 2.0; // 1.0 measured 2.5x worse than mis at r = 0.05, N = 10
@@ -64,8 +80,11 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.capHalfAngle = kPi;
         p.binLevel = 0;
         p.productLevel = 5;
-        p.envKeep = 256;
-        p.brdfKeep = 64;
+        p.envKeep = kEnvKeepWhole;
+        p.brdfKeep = kBrdfKeep;
+        p.mixBsdf = kMixBsdf;
+        p.refineCellAngle = kRefineCellPerLobe * p.lobeHalfWidth;
+        p.refineMaxLevels = kRefineMaxLevels;
         p.reason = "diffuse: env x clamped cosine around the normal over the whole sphere, 32^2, "
                    "refined by the env pyramid";
         return p;
@@ -83,19 +102,35 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.reason = why;
         return p;
     }
-    p.capHalfAngle = kCapCoverage * p.lobeHalfWidth;
     const bool whole = p.capHalfAngle >= kWholeSphereCapAngle;
     p.binLevel = whole ? 0 : (p.capHalfAngle < 0.3 ? 6 : 5);
     p.productLevel = 5;
-    p.envKeep = whole ? 256 : 192;
-    p.brdfKeep = 96;
+    p.envKeep = whole ? kEnvKeepWhole : kEnvKeepWindow;
+    p.brdfKeep = kBrdfKeep;
+    p.mixBsdf = kMixBsdf;
+    p.refineCellAngle = kRefineCellPerLobe * p.lobeHalfWidth;
+    p.refineMaxLevels = kRefineMaxLevels;
     std::snprintf(why, sizeof why,
                   "glossy: cap %.3f rad around the reflection vector (%s), %dx%d bins, 32^2 "
-                  "product, K env %zu / brdf %zu, refined by the env pyramid",
+                  "product, K env %zu / brdf %zu, lobe-refined to %.3f rad, then by the env pyramid",
                   p.capHalfAngle, whole ? "whole sphere" : "window", 1 << p.binLevel,
-                  1 << p.binLevel, p.envKeep, p.brdfKeep);
+                  1 << p.binLevel, p.envKeep, p.brdfKeep, p.refineCellAngle);
     p.reason = why;
     return p;
+}
+
+int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int envLevel) {
+    if (!(policy.refineCellAngle > 0.0) || policy.refineMaxLevels <= 0)
+        return 0;
+    const int leafLevel = window.k + policy.productLevel;
+    double cell = std::sqrt(4.0 * kPi) * std::ldexp(1.0, -leafLevel);
+    int levels = 0;
+    while (levels < policy.refineMaxLevels && leafLevel + levels < envLevel &&
+           cell > policy.refineCellAngle) {
+        cell *= 0.5;
+        ++levels;
+    }
+    return levels;
 }
 
 MaterialProductTables MaterialProductTables::build(const SamplerEnvironment& env,

@@ -46,8 +46,15 @@ struct ProductPolicy {
     size_t brdfKeep = 0;        // K of the per-point BRDF x cos factor
     // Defensive BSDF share of the `wavelet` mixture when the product samples the lobe; the env
     // share is chosen per shading point from the tail's share of the integrand (direction_sampler).
-    double mixBsdf = 0.1;
+    double mixBsdf = 0.03;
+    // Lobe refinement below the product's leaves (env_product_sampler.h): env levels weighted by
+    // the BRDF until a cell is narrower than refineCellAngle, at most refineMaxLevels levels.
+    double refineCellAngle = 0.0; // radians; 0: no refinement
+    int refineMaxLevels = 0;
 };
+
+// How many env levels below the product's leaves over `window` the lobe refinement weights.
+int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int envLevel);
 
 // GGX alpha as the plugin computes it (alpha = max(r^2, 1e-4), docs/estimator.md).
 double ggxAlpha(float roughness);

@@ -46,7 +46,9 @@ const uint kModeBsdfOnly = 0u;
 const uint kModeProduct = 1u;
 const uint kModeBsdfLobe = 2u;
 
-// The CPU's constants (direction_sampler.cpp).
+// The mixture's constants. The CPU's minimum env share is 0.02 since its product gained the lobe
+// refinement below the leaves; the GPU's coarser product (2^4 leaves, no lobe refinement) keeps
+// the earlier 0.05 its tests were run with (docs/wavelet-sampler.md).
 const double kMinEnvShare = 0.05LF;
 const double kMaxEnvShare = 0.8LF;
 const int kLobeStrata = 4;

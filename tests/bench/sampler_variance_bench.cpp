@@ -138,14 +138,24 @@ std::string resourceDir() {
 
 int main(int argc, char** argv) {
     std::vector<SamplerKind> kinds = allSamplerKinds();
-    bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    bool quick = false;
+    std::string only; // --env NAME: run one study (sun, city, courtyard)
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (std::strcmp(argv[i], "--env") == 0 && i + 1 < argc)
+            only = argv[++i];
+    }
     std::vector<Study> studies;
     const float s45 = std::sqrt(0.5f);
     const glm::vec3 sun = rotateAboutZ(glm::vec3(-s45, s45, 0.0f), -kSunOffsetDeg);
-    studies.push_back({"sky + 0.53 deg sun at 1e5 x sky mean, 12 deg from the reflection vector",
-                       makeSunSkyEnvironment(quick ? 512 : 1024, sun, kSunRatio)});
+    if (only.empty() || only == "sun")
+        studies.push_back({"sky + 0.53 deg sun at 1e5 x sky mean, 12 deg from the reflection vector",
+                           makeSunSkyEnvironment(quick ? 512 : 1024, sun, kSunRatio)});
     if (!quick)
         for (const char* name : {"city", "courtyard"}) {
+            if (!only.empty() && only != name)
+                continue;
             auto env = loadDownsampledEnvironment(
                 resourceDir() + "/envmaps/" + name + ".exr", 512);
             if (!env) {
