@@ -7,6 +7,7 @@
 #include "render/cpu_environment.h"
 #include "render/sampler_chi_square.h"
 #include "render/sampler_integrals.h"
+#include "render/sampler_test_configs.h"
 #include "render/sampler_test_envs.h"
 #include "util/chi_square.h"
 #include "util/hemisphere_sampling.h"
@@ -23,7 +24,8 @@
 namespace wavelit::render {
 namespace {
 
-constexpr int kConfigs = 6;
+using namespace testing_configs;
+
 constexpr int kEnvs = 2;
 constexpr int kKinds = 7;
 // Overall significance 0.01 over every chi-square test of this file (Šidák-corrected per test,
@@ -44,31 +46,6 @@ constexpr double kPdfRelativeTolerance = 1e-4;
 // Draws whose float rounding crossed a texel edge (expected ~1e-7 x 4 edges x kMeanSamples).
 constexpr int kMaxPdfMismatches = 2;
 
-struct Config {
-    const char* name;
-    const char* brdf;
-    float roughness;
-    float thetaOutDeg;
-};
-constexpr Config kConfigList[kConfigs] = {
-    {"normal view", "ggx", 0.5f, 0.0f},   {"grazing 85", "ggx", 0.3f, 85.0f},
-    {"mirror r0.02", "ggx", 0.02f, 45.0f}, {"glossy r0.2", "ggx", 0.2f, 45.0f},
-    {"rough r1", "ggx", 1.0f, 30.0f},      {"lambert", "lambert", 0.5f, 40.0f},
-};
-
-// A tilted shading frame, so nothing lines up with the world or map axes by accident.
-ShadingPoint shadingPoint(const Config& c, size_t material) {
-    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.85f, 0.4f));
-    const util::Frame f = util::Frame::fromNormal(n);
-    const float th = c.thetaOutDeg * (util::kPi / 180.0f), ph = 0.7f;
-    const glm::vec3 wo = f.toWorld({std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
-                                    std::cos(th)});
-    return {f.n, f.t, f.b, glm::normalize(wo), material};
-}
-
-glm::vec3 reflectionOf(const ShadingPoint& p) {
-    return 2.0f * glm::dot(p.wo, p.n) * p.n - p.wo;
-}
 
 
 std::vector<SamplerMaterial> configMaterials() {

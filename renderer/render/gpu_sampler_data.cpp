@@ -1,5 +1,6 @@
 #include "render/gpu_sampler_data.h"
 
+#include <algorithm>
 #include <bit>
 #include <string>
 
@@ -36,7 +37,9 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 continue; // kinds other than wavelet: the material needs nothing
             const ProductPolicy& policy = product->policy();
             GpuSamplerMaterial& g = d.materials[i];
-            g.mixBsdf = float(policy.mixBsdf);
+            // The GPU's coarser product (no lobe refinement) keeps the larger defensive share
+            // its variance was measured with (docs/wavelet-sampler.md "On the Vulkan tracer").
+            g.mixBsdf = float(std::max(policy.mixBsdf, kGpuMinBsdfShare));
             g.capHalfAngle = float(policy.capHalfAngle);
             g.aroundNormal = policy.aroundNormal ? 1u : 0u;
             if (policy.mode == ProductMode::BsdfLobe) {

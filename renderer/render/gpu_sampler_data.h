@@ -27,6 +27,8 @@ inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
 // (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
 inline constexpr int kGpuMaxProductLevel = 4;
 inline constexpr int kGpuTailLevel = 3;
+// The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower).
+inline constexpr double kGpuMinBsdfShare = 0.1;
 
 // Mirrors `struct SamplerMaterial` in path_tracer.comp (std430).
 struct GpuSamplerMaterial {

@@ -14,6 +14,7 @@
 #include "render/gpu_path_tracer.h"
 #include "render/gpu_sampler_data.h"
 #include "render/sampler_chi_square.h"
+#include "render/sampler_test_configs.h"
 #include "render/sampler_test_envs.h"
 #include "util/hemisphere_sampling.h"
 #include "vk/buffer.h"
@@ -34,23 +35,12 @@
 namespace wavelit::render {
 namespace {
 
-constexpr int kConfigs = 6;
+using namespace testing_configs;
+
 constexpr int kSamples = 40000;
 constexpr int kPyramid = ((1 << (2 * (kGpuMaxProductLevel + 1))) - 1) / 3; // the shader's gMass
 constexpr int kInfoFloats = 8 + kPyramid;
 const double kChiAlpha = util::sidakAlpha(0.01, 2 * kConfigs);
-
-struct Config {
-    const char* name;
-    const char* brdf;
-    float roughness;
-    float thetaOutDeg;
-};
-constexpr Config kConfigList[kConfigs] = {
-    {"normal view", "ggx", 0.5f, 0.0f},   {"grazing 85", "ggx", 0.3f, 85.0f},
-    {"mirror r0.02", "ggx", 0.02f, 45.0f}, {"glossy r0.2", "ggx", 0.2f, 45.0f},
-    {"rough r1", "ggx", 1.0f, 30.0f},      {"lambert", "lambert", 0.5f, 40.0f},
-};
 
 // Inputs per configuration: t, b, n, wo (world; w of n = BRDF type, w of wo = roughness) and the
 // base colour. Outputs per sample: (wi, pdf); per configuration (from its sample 0): weights
@@ -108,15 +98,6 @@ void main() {
     }
 }
 )";
-
-ShadingPoint shadingPoint(const Config& c, size_t material) {
-    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.85f, 0.4f));
-    const util::Frame f = util::Frame::fromNormal(n);
-    const float th = c.thetaOutDeg * (util::kPi / 180.0f), ph = 0.7f;
-    const glm::vec3 wo = f.toWorld({std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
-                                    std::cos(th)});
-    return {f.n, f.t, f.b, glm::normalize(wo), material};
-}
 
 // What the GPU built for one configuration, and the pdf it defines (dsMixturePdf's CPU form).
 struct GpuMixture {
@@ -180,7 +161,7 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         envSource.rotationDeg = 30.0f;
     } else {
         const ShadingPoint glossy = shadingPoint(kConfigList[3], 3);
-        const glm::vec3 r = 2.0f * glm::dot(glossy.wo, glossy.n) * glossy.n - glossy.wo;
+        const glm::vec3 r = reflectionOf(glossy);
         envSource = makeSunSkyEnvironment(256, glm::normalize(r + glm::vec3(0.0f, 0.14f, 0.0f)), 1e6);
     }
     SceneSamplerTables scene;
@@ -286,7 +267,7 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         o.samples = kSamples;
         const float r = kConfigList[c].roughness;
         if (std::string(kConfigList[c].brdf) == "ggx" && r < 0.3f) {
-            o.hotSpots = {2.0f * glm::dot(mix.point.wo, mix.point.n) * mix.point.n - mix.point.wo};
+            o.hotSpots = {reflectionOf(mix.point)};
             o.hotRadius = 10.0 * r * r + 0.005;
         }
         o.toBinFrame = [&](const glm::dvec3& d) { return env.toLocal(d); };
