@@ -28,7 +28,8 @@ layout(std140, binding = 0) uniform Params {
     uvec4 size;        // width, height, bounces, triangle count
     uvec4 envSize;     // env width, env height (0 = constant), material count, light count
     vec4 lightInfo;    // x = light selection probability 1/n (computed on the CPU, as LightSet)
-    uvec4 samplerInfo; // sampler kind code, env lit (0/1), word offset of the 16^2 env averages
+    uvec4 samplerInfo; // sampler kind code, env lit (0/1), word offset of the 8^2 env averages,
+                       // env map level N
     vec4 samplerEnv;   // x = the sampler env map's mean luminance
 } params;
 
@@ -72,7 +73,9 @@ struct EnvNode {
 struct SamplerMaterial {
     uint mode, tableOffset, nodeOffset, scalingOffset;
     float mixBsdf, capHalfAngle;
-    uint aroundNormal, pad;
+    uint aroundNormal, refineMaxLevels;
+    float refineCellAngle;
+    uint pad0, pad1, pad2;
 };
 layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
@@ -197,6 +200,7 @@ void main() {
         globals.kind = params.samplerInfo.x;
         globals.lit = params.samplerInfo.y != 0u;
         globals.tailOffset = params.samplerInfo.z;
+        globals.envLevel = int(params.samplerInfo.w);
         globals.envMean = params.samplerEnv.x;
         globals.cosSinYaw = params.envRotation.xy;
         DirSampler ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,

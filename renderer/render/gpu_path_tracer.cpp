@@ -209,6 +209,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         d.params.samplerInfo[0] = samplers.kind;
         d.params.samplerInfo[1] = samplers.lit ? 1u : 0u;
         d.params.samplerInfo[2] = samplers.tailOffset;
+        d.params.samplerInfo[3] = samplers.envLevel;
         d.params.samplerEnv[0] = samplers.envMean;
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;

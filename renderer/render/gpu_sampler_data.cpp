@@ -26,6 +26,7 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         const SamplerEnvironment& env = t.environment();
         d.lit = env.hasLight();
         d.envMean = float(env.cellAverage(0, 0, 0));
+        d.envLevel = uint32_t(env.level());
         if (d.lit)
             d.envNodes = env.fine().table();
         for (size_t i = 0; i < gpuMaterialCount && i < tables.samplerIndexOfMaterial.size(); ++i) {
@@ -42,6 +43,8 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             g.mixBsdf = float(std::max(policy.mixBsdf, kGpuMinBsdfShare));
             g.capHalfAngle = float(policy.capHalfAngle);
             g.aroundNormal = policy.aroundNormal ? 1u : 0u;
+            g.refineMaxLevels = uint32_t(std::max(0, policy.refineMaxLevels));
+            g.refineCellAngle = float(policy.refineCellAngle);
             if (policy.mode == ProductMode::BsdfLobe) {
                 g.mode = kGpuSamplerBsdfLobe;
                 continue;

@@ -39,9 +39,11 @@ struct GpuSamplerMaterial {
     float mixBsdf = 0.0f;       // defensive bsdf share with the product
     float capHalfAngle = 0.0f;  // lobe cap (tail estimate without a product)
     uint32_t aroundNormal = 0;  // 1: the product's axis is the normal (Lambert)
-    uint32_t pad = 0;
+    uint32_t refineMaxLevels = 0;   // lobe refinement below the product's leaves (the policy's)
+    float refineCellAngle = 0.0f;   // radians; 0: none
+    uint32_t pad[3] = {0, 0, 0};
 };
-static_assert(sizeof(GpuSamplerMaterial) == 32);
+static_assert(sizeof(GpuSamplerMaterial) == 48);
 static_assert(sizeof(wavelet::HierarchicalSampler::TableNode) == 16);
 
 struct GpuSamplerData {
@@ -49,6 +51,7 @@ struct GpuSamplerData {
     bool lit = false;
     float envMean = 0.0f;
     uint32_t tailOffset = 0;
+    uint32_t envLevel = 0; // the env map's level N
     std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty
     std::vector<GpuSamplerMaterial> materials;                     // never empty
     std::vector<uint32_t> words;                                   // never empty

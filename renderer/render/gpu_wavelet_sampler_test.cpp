@@ -17,6 +17,7 @@
 #include "render/sampler_test_configs.h"
 #include "render/sampler_test_envs.h"
 #include "util/hemisphere_sampling.h"
+#include "util/image.h"
 #include "vk/buffer.h"
 #include "vk/command_runner.h"
 #include "vk/compute_kernel.h"
@@ -27,6 +28,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -50,14 +52,14 @@ const std::string kKernel = R"(#version 460
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 layout(local_size_x = 64) in;
 struct EnvNode { float py0, px0y0, px0y1; int firstChild; };
-struct SamplerMaterial { uint mode, tableOffset, nodeOffset, scalingOffset; float mixBsdf, capHalfAngle; uint aroundNormal, pad; };
+struct SamplerMaterial { uint mode, tableOffset, nodeOffset, scalingOffset; float mixBsdf, capHalfAngle; uint aroundNormal, refineMaxLevels; float refineCellAngle; uint pad0, pad1, pad2; };
 layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 1) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 2) readonly buffer SamplerWords { uint samplerWords[]; };
 layout(std430, binding = 3) readonly buffer In { vec4 inputs[]; };
 layout(std430, binding = 4) buffer Samples { vec4 samples[]; };
 layout(std430, binding = 5) buffer Info { float info[]; };
-layout(push_constant) uniform Push { uint samplesPerConfig, configs, tailOffset, lit; float envMean, cosYaw, sinYaw; } pc;
+layout(push_constant) uniform Push { uint samplesPerConfig, configs, tailOffset, lit; float envMean, cosYaw, sinYaw; int envLevel; } pc;
 #include "common/direction_sampler.glsl"
 #include "common/rng.glsl"
 void main() {
@@ -75,6 +77,7 @@ void main() {
     g.lit = pc.lit != 0u;
     g.tailOffset = pc.tailOffset;
     g.envMean = pc.envMean;
+    g.envLevel = pc.envLevel;
     g.cosSinYaw = vec2(pc.cosYaw, pc.sinYaw);
     DirSampler s = dsSetup(g, samplerMaterials[c], f, frameToLocal(f, wo.xyz), uint(n.w), color, wo.w);
     Pcg32 rng = pcgSeed(uint64_t(7919u + c), uint64_t(i));
@@ -94,6 +97,7 @@ void main() {
         info[base + 4u] = float(s.ox);
         info[base + 5u] = float(s.oy);
         info[base + 6u] = float(s.m);
+        info[base + 7u] = float(s.refineLevels);
         for (int k = 0; k < )" + std::to_string(kPyramid) + R"(; ++k) info[base + 8u + uint(k)] = gMass[k];
     }
 }
@@ -102,7 +106,7 @@ void main() {
 // What the GPU built for one configuration, and the pdf it defines (dsMixturePdf's CPU form).
 struct GpuMixture {
     double cProduct = 0, cBsdf = 0, cEnv = 0;
-    int k = 0, ox = 0, oy = 0, m = 0;
+    int k = 0, ox = 0, oy = 0, m = 0, refineLevels = 0;
     std::vector<double> mass; // the pyramid, levels 0..m
     const SamplerEnvironment* env = nullptr;
     const SamplerMaterial* material = nullptr;
@@ -130,7 +134,75 @@ struct GpuMixture {
             x = 2 * x + cx;
             y = 2 * y + cy;
         }
-        return probability * env->fine().pdfWithin({level, gx, gy}, p);
+        int l = level, x2 = gx, y2 = gy;
+        for (int r = 0; r < refineLevels; ++r) {
+            double w[4];
+            refineWeights(l, x2, y2, w);
+            const double scale2 = std::ldexp(1.0, l + 1);
+            const int cx = std::clamp(int(p.x * scale2) - 2 * x2, 0, 1);
+            const int cy = std::clamp(int(p.y * scale2) - 2 * y2, 0, 1);
+            const double row = cy == 0 ? w[0] + w[1] : w[2] + w[3];
+            probability *= share(row, w[0] + w[1] + w[2] + w[3]) * share(w[2 * cy + cx], row);
+            ++l;
+            x2 = 2 * x2 + cx;
+            y2 = 2 * y2 + cy;
+        }
+        return probability * env->fine().pdfWithin({l, x2, y2}, p);
+    }
+
+    static double share(double part, double whole) { return whole > 0 ? part / whole : 0.5; }
+
+    // dsRefineWeights: the env table's split of the cell times BRDF x cos at the children's
+    // centres, plus 2% of the largest.
+    void refineWeights(int l, int x, int y, double w[4]) const {
+        const auto& table = env->fine().table();
+        int node = 0, reached = 0;
+        while (reached < l && table[size_t(node)].firstChild >= 0) {
+            const int shift = l - reached - 1;
+            node = table[size_t(node)].firstChild + (((x >> shift) & 1) | (((y >> shift) & 1) << 1));
+            ++reached;
+        }
+        for (int c = 0; c < 4; ++c)
+            w[c] = 1.0;
+        if (reached == l && table[size_t(node)].firstChild >= 0) {
+            auto split = [](float s, double& p0, double& p1) {
+                if (std::signbit(s)) {
+                    p1 = -double(s);
+                    p0 = 1.0 - p1;
+                } else {
+                    p0 = double(s);
+                    p1 = 1.0 - p0;
+                }
+            };
+            double py0, py1, pl0, pr0, pl1, pr1;
+            split(table[size_t(node)].py0, py0, py1);
+            split(table[size_t(node)].px0y0, pl0, pr0);
+            split(table[size_t(node)].px0y1, pl1, pr1);
+            w[0] = py0 * pl0;
+            w[1] = py0 * pr0;
+            w[2] = py1 * pl1;
+            w[3] = py1 * pr1;
+        }
+        const double side = std::ldexp(1.0, -(l + 1));
+        double h[4], hmax = 0.0;
+        for (int c = 0; c < 4; ++c) {
+            const glm::dvec2 centre((2 * x + (c & 1) + 0.5) * side, (2 * y + (c >> 1) + 0.5) * side);
+            const glm::vec3 d = glm::vec3(env->toWorld(env->map().toDirection(0, centre)));
+            h[c] = brdfCos(d);
+            hmax = std::max(hmax, h[c]);
+        }
+        if (hmax > 0.0 && std::isfinite(hmax))
+            for (int c = 0; c < 4; ++c)
+                w[c] *= h[c] + 0.02 * hmax;
+    }
+
+    double brdfCos(const glm::vec3& wi) const {
+        const glm::vec3 local(glm::dot(wi, point.t), glm::dot(wi, point.b), glm::dot(wi, point.n));
+        const glm::vec3 woLocal(glm::dot(point.wo, point.t), glm::dot(point.wo, point.b),
+                                glm::dot(point.wo, point.n));
+        if (local.z <= 0.0f)
+            return 0.0;
+        return double(util::luminance(material->brdf->eval(material->params, woLocal, local) * local.z));
     }
 
     double pdf(const glm::vec3& wi) const {
@@ -193,7 +265,7 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
     {
         using vk::BindingKind;
         auto kernel = vk::ComputeKernel::create(
-            **ctx, {"wavelet sampler test", *spirv, std::vector<BindingKind>(6, BindingKind::StorageBuffer), 28});
+            **ctx, {"wavelet sampler test", *spirv, std::vector<BindingKind>(6, BindingKind::StorageBuffer), 32});
         ASSERT_TRUE(kernel.ok()) << kernel.error().message();
         const GpuSamplerData& d = *packed;
         struct Blob {
@@ -217,9 +289,11 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         struct {
             uint32_t samplesPerConfig, configs, tailOffset, lit;
             float envMean, cosYaw, sinYaw;
+            int32_t envLevel;
         } push{uint32_t(kSamples), uint32_t(kConfigs), d.tailOffset, d.lit ? 1u : 0u, d.envMean,
                float(std::cos(float(envSource.rotationDeg * util::kPi / 180.0f))),
-               float(std::sin(float(envSource.rotationDeg * util::kPi / 180.0f)))};
+               float(std::sin(float(envSource.rotationDeg * util::kPi / 180.0f))),
+               int32_t(d.envLevel)};
         auto runner = vk::CommandRunner::create(**ctx, "wavelet sampler test");
         ASSERT_TRUE(runner.ok());
         ASSERT_TRUE((*runner)
@@ -244,6 +318,7 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         mix.ox = int(f[4]);
         mix.oy = int(f[5]);
         mix.m = int(f[6]);
+        mix.refineLevels = int(f[7]);
         mix.mass.assign(f + 8, f + 8 + kPyramid);
         mix.env = &env;
         mix.material = &materials[size_t(c)];
@@ -285,10 +360,11 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         EXPECT_EQ(result.chi.observedOutsideSupport, 0.0);
         EXPECT_LE(result.integratedPdf, 1.0 + 1e-3);
         std::printf("[gpu wavelet chi2] %-6s %-13s p = %.3g (dof %d, integral %.4f, shares "
-                    "product %.2f bsdf %.2f env %.2f, window k=%d m=%d, %d pdf mismatches)\n",
+                    "product %.2f bsdf %.2f env %.2f, window k=%d m=%d + %d refined, %d pdf "
+                    "mismatches)\n",
                     GetParam() == 0 ? "studio" : "sun", kConfigList[c].name, result.chi.pValue,
                     result.chi.degreesOfFreedom, result.integratedPdf, mix.cProduct, mix.cBsdf,
-                    mix.cEnv, mix.k, mix.m, mismatches);
+                    mix.cEnv, mix.k, mix.m, mix.refineLevels, mismatches);
     }
 }
 

@@ -16,7 +16,8 @@
 // The including shader declares, before including this file:
 //   struct EnvNode { float py0, px0y0, px0y1; int firstChild; };  buffer { EnvNode envNodes[]; };
 //   struct SamplerMaterial { uint mode, tableOffset, nodeOffset, scalingOffset;
-//                            float mixBsdf, capHalfAngle; uint aroundNormal, pad; };
+//                            float mixBsdf, capHalfAngle; uint aroundNormal, refineMaxLevels;
+//                            float refineCellAngle; uint pad0, pad1, pad2; };
 //   buffer { SamplerMaterial samplerMaterials[]; };  buffer { uint samplerWords[]; };
 // samplerWords holds each material's flat product tables (MaterialProductTables::flatten(), its
 // three arrays at the three offsets) and the env's 8 x 8 cell averages (float bits).
@@ -66,6 +67,7 @@ int gNode[85];
 struct DirSampler {
     float cProduct, cBsdf, cEnv, cUniform, cCosine; // mixture weights (sum 1)
     int k, ox, oy, m;                               // product window and level
+    int refineLevels;                               // lobe refinement levels below the leaves
     Frame frame;
     vec3 wo; // shading-local
     uint brdfType;
@@ -77,7 +79,8 @@ struct DirSampler {
 struct SamplerGlobals {
     uint kind;       // kSampler*
     bool lit;        // the env has light (else env techniques are absent)
-    uint tailOffset; // word offset of the 16 x 16 env averages
+    uint tailOffset; // word offset of the 8 x 8 env averages
+    int envLevel;    // the env map's level N (2^N x 2^N texels)
     float envMean;   // the env map's mean luminance (its level-0 average)
     vec2 cosSinYaw;
 };
@@ -179,6 +182,62 @@ void dsChoose(double p0, double p1, inout double u, inout double probability, ou
     }
 }
 
+// Lobe refinement below the product's leaves (EnvProductSampler's, CPU): for a few levels the four
+// children of a cell are weighted by the env's own split of the cell (its quadtree's conditional
+// probabilities: ratios of the children's averages) times BRDF x cos at the child's centre, plus
+// 2% of the largest so no child with env light loses support. The weights depend only on the cell,
+// so walking them again for a point gives the exact pdf.
+const float kLobeFloor = 0.02;
+
+void dsRefineWeights(DirSampler s, int l, int x, int y, out double w[4]) {
+    int reached;
+    int node = envFindNode(l, x, y, reached);
+    w[0] = 1.0LF;
+    w[1] = 1.0LF;
+    w[2] = 1.0LF;
+    w[3] = 1.0LF;
+    if (reached == l && envNodes[node].firstChild >= 0) {
+        EnvNode n = envNodes[node];
+        double py0, py1, pl0, pr0, pl1, pr1;
+        decodeSplit(n.py0, py0, py1);
+        decodeSplit(n.px0y0, pl0, pr0);
+        decodeSplit(n.px0y1, pl1, pr1);
+        w[0] = py0 * pl0;
+        w[1] = py0 * pr0;
+        w[2] = py1 * pl1;
+        w[3] = py1 * pr1;
+    }
+    double side = 1.0LF / double(1 << (l + 1));
+    float h[4];
+    float hmax = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
+        h[c] = dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre))));
+        hmax = max(hmax, h[c]);
+    }
+    if (hmax > 0.0 && !isinf(hmax))
+        for (int c = 0; c < 4; ++c) w[c] *= double(h[c] + kLobeFloor * hmax);
+}
+
+// Each half's own share, as dsChildProbabilities.
+void dsParts(double a, double b, out double p0, out double p1) {
+    double whole = a + b;
+    p0 = whole > 0.0LF ? a / whole : 0.5LF;
+    p1 = whole > 0.0LF ? b / whole : 0.5LF;
+}
+
+int dsRefineLevels(SamplerMaterial sm, int leafLevel, int envLevel) {
+    if (!(sm.refineCellAngle > 0.0)) return 0;
+    float cell = sqrt(kFourPi) / float(1 << leafLevel);
+    int levels = 0;
+    while (levels < int(sm.refineMaxLevels) && leafLevel + levels < envLevel &&
+           cell > sm.refineCellAngle) {
+        cell *= 0.5;
+        ++levels;
+    }
+    return levels;
+}
+
 // A point of the octahedral square from the product (leaf by the product's quadtree, then the
 // env's quadtree inside it); `density` per unit square area.
 dvec2 dsSampleProduct(DirSampler s, dvec2 u, out double density) {
@@ -194,8 +253,23 @@ dvec2 dsSampleProduct(DirSampler s, dvec2 u, out double density) {
         y = 2 * y + cy;
     }
     int shift = s.m - 1;
+    int l = s.k + s.m;
+    x += s.ox << shift;
+    y += s.oy << shift;
+    for (int r = 0; r < s.refineLevels; ++r) {
+        double w[4], p0, p1;
+        dsRefineWeights(s, l, x, y, w);
+        int cy, cx;
+        dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
+        dsChoose(p0, p1, u.y, probability, cy);
+        dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
+        dsChoose(p0, p1, u.x, probability, cx);
+        l += 1;
+        x = 2 * x + cx;
+        y = 2 * y + cy;
+    }
     double q;
-    dvec2 p = envSampleWithin(s.k + s.m, (s.ox << shift) + x, (s.oy << shift) + y, u, q);
+    dvec2 p = envSampleWithin(l, x, y, u, q);
     density = probability * q;
     return p;
 }
@@ -217,6 +291,21 @@ double dsProductPdf(DirSampler s, dvec2 p) {
         probability *= pRow[cy] * pColumn[2 * cy + cx];
         x = 2 * x + cx;
         y = 2 * y + cy;
+    }
+    if (!(probability > 0.0LF)) return 0.0LF;
+    for (int r = 0; r < s.refineLevels; ++r) {
+        double w[4], p0, p1;
+        dsRefineWeights(s, level, gx, gy, w);
+        double childScale = double(1 << (level + 1));
+        int cx = clamp(int(p.x * childScale) - 2 * gx, 0, 1);
+        int cy = clamp(int(p.y * childScale) - 2 * gy, 0, 1);
+        dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
+        probability *= cy == 0 ? p0 : p1;
+        dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
+        probability *= cx == 0 ? p0 : p1;
+        level += 1;
+        gx = 2 * gx + cx;
+        gy = 2 * gy + cy;
     }
     if (!(probability > 0.0LF)) return 0.0LF;
     return probability * envPdfWithin(level, gx, gy, p);
@@ -283,6 +372,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     s.ox = 0;
     s.oy = 0;
     s.m = 0;
+    s.refineLevels = 0;
     s.frame = frame;
     s.wo = wo;
     s.brdfType = brdfType;
@@ -331,6 +421,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         s.ox = int(samplerWords[binWords + 1u]);
         s.oy = int(samplerWords[binWords + 2u]);
         s.m = min(int(samplerWords[header + 2u]), kMaxProductLevel);
+        s.refineLevels = dsRefineLevels(sm, s.k + s.m, g.envLevel);
         float total = dsBuildProduct(s, sm, samplerWords[binWords + 3u]);
         product = total > 0.0;
         if (product) {
