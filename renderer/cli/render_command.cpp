@@ -80,6 +80,7 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
     double totalSeconds = env.buildSeconds();
     for (size_t i = 0; i < t.materialCount(); ++i) {
         const render::MaterialProductTables* p = t.productTables(i);
+        const size_t bytes = p ? p->bytes() : 0;
         const std::string reason =
             p ? p->policy().reason
               : std::string("the ") + render::samplerKindName(t.kind()) +
@@ -91,11 +92,11 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
           << ", \"envKeep\": " << (p ? p->policy().envKeep : 0)
           << ", \"brdfKeep\": " << (p ? p->policy().brdfKeep : 0)
           << ", \"factorCount\": " << (p ? p->factorCount() : 0)
-          << ", \"bytes\": " << (p ? p->bytes() : 0)
+          << ", \"bytes\": " << bytes
           << ", \"buildSeconds\": " << (p ? p->buildSeconds() : 0.0)
           << ", \"reused\": " << (t.productTablesReused(i) ? "true" : "false") << "}";
         if (p) {
-            totalBytes += p->bytes();
+            totalBytes += bytes;
             totalSeconds += p->buildSeconds();
             ++productCount;
         }

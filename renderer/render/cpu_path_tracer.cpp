@@ -65,18 +65,13 @@ util::Result<std::vector<CpuPathTracer::ResolvedMaterial>>
 CpuPathTracer::resolveMaterials(const scene::Scene& scene) {
     // The default material sits after the scene's: bvh.cpp gives objects whose material id is
     // unknown the index materials.size().
-    std::vector<scene::Material> all = scene.materials;
-    all.push_back(scene::Material{});
+    auto all = resolveSceneMaterials(scene);
+    if (!all)
+        return all.error();
     std::vector<ResolvedMaterial> materials;
-    for (size_t i = 0; i < all.size(); ++i) {
-        const scene::Material& m = all[i];
-        const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
-        if (!brdf)
-            return util::makeError(util::ErrorKind::Unsupported, "",
-                                   "material '" + m.name + "' uses unknown BRDF '" + m.brdf + "'",
-                                   "/materials/" + std::to_string(i) + "/brdf");
-        materials.push_back({brdf, plugins::BrdfParams{m.baseColor, m.roughness}, m.emission});
-    }
+    for (const SceneMaterial& m : *all)
+        materials.push_back({m.brdf, plugins::BrdfParams{m.material.baseColor, m.material.roughness},
+                             m.material.emission});
     return materials;
 }
 

@@ -49,13 +49,12 @@ bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironment
     return a.maxLevel == b.maxLevel && a.minLevel == b.minLevel;
 }
 
-// The same plugin with the same parameters (the name is only a label).
-bool sameMaterial(const SamplerMaterial& a, const SamplerMaterial& b) {
+} // namespace
+
+bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b) {
     return a.brdf == b.brdf && a.params.baseColor == b.params.baseColor &&
            a.params.roughness == b.params.roughness;
 }
-
-} // namespace
 
 // samplerKindName lives in render_options.cpp (one name table for CLI and samplers).
 
@@ -91,7 +90,7 @@ DirectionSamplerTables::build(const scene::Environment& env, std::vector<Sampler
         std::shared_ptr<const MaterialProductTables> product;
         if (t->m_envReused)
             for (size_t i = 0; i < previous->m_products.size() && !product; ++i)
-                if (sameMaterial(previous->m_materials[i], m))
+                if (sameSampling(previous->m_materials[i], m))
                     product = previous->m_products[i];
         t->m_productReused.push_back(product != nullptr);
         if (!product)

@@ -62,6 +62,10 @@ struct SamplerMaterial {
     plugins::BrdfParams params;
 };
 
+// The same plugin with the same parameters: the same tables over the same env (the name is only a
+// label).
+bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
+
 class DirectionSamplerTables {
 public:
     // Builds the env tables and, for kind Wavelet, the product tables of every material

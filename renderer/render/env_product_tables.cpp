@@ -213,8 +213,13 @@ FlatProductTables MaterialProductTables::flatten() const {
 size_t MaterialProductTables::bytes() const {
     if (m_policy.mode != ProductMode::Product)
         return 0;
-    const FlatProductTables f = flatten();
-    return 4 * (f.header.size() + f.nodeWords.size() + f.scaling.size());
+    // flatten()'s sizes, counted without building the copy: header (5 words, 4 per bin, 2 per
+    // factor), kFlatNodeWords per node, one scaling float per factor.
+    size_t nodes = 0;
+    for (const wavelet::SparseHaar& factor : m_factors)
+        nodes += factor.nodes.size();
+    const size_t words = 5 + 4 * m_windows.size() + 3 * m_factors.size() + kFlatNodeWords * nodes;
+    return 4 * words;
 }
 
 wavelet::SparseHaar unflattenFactor(const FlatProductTables& flat, int factor, int level) {

@@ -66,6 +66,8 @@ TEST(EnvProductTables, FlatExportRoundTrips) {
         env, chooseProductPolicy(*plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}, env));
     const FlatProductTables flat = t.flatten();
     ASSERT_GT(t.factorCount(), 1u);
+    // bytes() counts the export without building it.
+    EXPECT_EQ(t.bytes(), 4 * (flat.header.size() + flat.nodeWords.size() + flat.scaling.size()));
     for (int bin = 0; bin < t.binCount(); bin += 97) {
         const uint32_t* b = &flat.header[5 + 4 * size_t(bin)];
         EXPECT_EQ(int(b[0]), t.window(bin).k);

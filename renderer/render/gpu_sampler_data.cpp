@@ -11,12 +11,18 @@ size_t GpuSamplerData::bytes() const {
            words.size() * sizeof(uint32_t);
 }
 
-util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
-                                             size_t gpuMaterialCount) {
+util::Status checkGpuSampler(SamplerKind kind) {
     if (kind == SamplerKind::Oracle)
         return util::makeError(util::ErrorKind::Unsupported, "",
-                               "sampler 'oracle' runs on the CPU only (a dense per-point product "
-                               "at full resolution has no GPU form; use --device cpu)");
+                               "sampler 'oracle' runs on the CPU only (its dense per-point "
+                               "product at full resolution has no GPU form; use --device cpu)");
+    return util::okStatus();
+}
+
+util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
+                                             size_t gpuMaterialCount) {
+    if (auto supported = checkGpuSampler(kind); !supported)
+        return supported.error();
     GpuSamplerData d;
     d.kind = uint32_t(kind);
     d.materials.assign(gpuMaterialCount, GpuSamplerMaterial{});

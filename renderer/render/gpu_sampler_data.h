@@ -58,9 +58,12 @@ struct GpuSamplerData {
     size_t bytes() const;
 };
 
+// Whether the Vulkan tracer can run `kind`: Unsupported for `oracle` (its dense per-point product
+// at full resolution has no GPU form), ok otherwise.
+util::Status checkGpuSampler(SamplerKind kind);
+
 // `tables` from SamplerTablesCache::update; gpuMaterialCount = scene materials + 1 (the
-// default). Errors (Unsupported): `oracle` (its dense per-point product has no GPU form) and a
-// product level below 1.
+// default). Errors (Unsupported): checkGpuSampler's, and a product level below 1.
 util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
                                              size_t gpuMaterialCount);
 

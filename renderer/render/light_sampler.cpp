@@ -106,25 +106,10 @@ LightConstants deriveLightConstants(const scene::Light& light) {
     return c;
 }
 
-LightSampler::LightSampler(const scene::Light& light) {
-    const LightConstants c = deriveLightConstants(light);
-    m_type = c.type;
-    m_delta = c.delta;
-    m_emission = c.emission;
-    m_position = c.position;
-    m_normal = c.normal;
-    m_axisU = c.axisU;
-    m_axisV = c.axisV;
-    m_radius = c.radius;
-    m_area = c.area;
-    m_cosInner = c.cosInner;
-    m_cosOuter = c.cosOuter;
-    m_sin2Sun = c.sin2Sun;
-    m_oneMinusCosSun = c.oneMinusCosSun;
-}
+LightSampler::LightSampler(const scene::Light& light) : m_c(deriveLightConstants(light)) {}
 
 LightSample LightSampler::sample(const glm::vec3& p, float u1, float u2) const {
-    switch (m_type) {
+    switch (m_c.type) {
     case scene::LightType::Sphere: return sampleSphere(p, u1, u2);
     case scene::LightType::Rect: return sampleRect(p, u1, u2);
     case scene::LightType::Sun: return sampleSun(u1, u2);
@@ -132,13 +117,13 @@ LightSample LightSampler::sample(const glm::vec3& p, float u1, float u2) const {
     case scene::LightType::Spot: break;
     }
     LightSample s;
-    const glm::vec3 toLight = m_position - p;
+    const glm::vec3 toLight = m_c.position - p;
     const float d2 = glm::dot(toLight, toLight);
     if (!(d2 > kMinDistance2)) return s;
     s.distance = std::sqrt(d2);
     s.wi = toLight / s.distance;
-    s.value = m_emission / d2;
-    if (m_type == scene::LightType::Spot) s.value *= spotFalloff(-s.wi);
+    s.value = m_c.emission / d2;
+    if (m_c.type == scene::LightType::Spot) s.value *= spotFalloff(-s.wi);
     s.pdf = 1.0f;
     s.delta = true;
     s.valid = true;
@@ -147,8 +132,8 @@ LightSample LightSampler::sample(const glm::vec3& p, float u1, float u2) const {
 
 LightSample LightSampler::sampleSphere(const glm::vec3& p, float u1, float u2) const {
     LightSample s;
-    const glm::vec3 toCentre = m_position - p;
-    const float d2 = glm::dot(toCentre, toCentre), r2 = m_radius * m_radius;
+    const glm::vec3 toCentre = m_c.position - p;
+    const float d2 = glm::dot(toCentre, toCentre), r2 = m_c.radius * m_c.radius;
     if (!(d2 > r2)) return s; // inside: the surface emits outward only
     const float oneMinusCos = sphereOneMinusCos(r2, d2);
     if (!(oneMinusCos > 0.0f)) return s;
@@ -158,35 +143,35 @@ LightSample LightSampler::sampleSphere(const glm::vec3& p, float u1, float u2) c
     // First intersection along wi: t = D cos θ − sqrt(r² − D² sin²θ).
     const float cosTheta = 1.0f - u1 * oneMinusCos;
     s.distance = std::max(0.0f, d * cosTheta - std::sqrt(std::max(0.0f, r2 - d2 * sin2)));
-    s.value = m_emission;
+    s.value = m_c.emission;
     s.pdf = conePdf(oneMinusCos);
     s.valid = true;
     return s;
 }
 
 SphericalRect LightSampler::sphericalRect(const glm::vec3& p) const {
-    return SphericalRect(m_position - m_axisU - m_axisV, 2.0f * m_axisU, 2.0f * m_axisV, p);
+    return SphericalRect(m_c.position - m_c.axisU - m_c.axisV, 2.0f * m_c.axisU, 2.0f * m_c.axisV, p);
 }
 
 LightSample LightSampler::sampleRect(const glm::vec3& p, float u1, float u2) const {
     LightSample s;
-    if (!(m_area > 0.0f) || !(glm::dot(p - m_position, m_normal) > 0.0f)) return s; // back side
+    if (!(m_c.area > 0.0f) || !(glm::dot(p - m_c.position, m_c.normal) > 0.0f)) return s; // back side
     const SphericalRect sr = sphericalRect(p);
     const bool spherical = sr.solidAngle() >= kMinSphericalRectSolidAngle;
     const glm::vec3 q = spherical ? sr.samplePoint({u1, u2})
-                                  : m_position + (2.0f * u1 - 1.0f) * m_axisU +
-                                        (2.0f * u2 - 1.0f) * m_axisV;
+                                  : m_c.position + (2.0f * u1 - 1.0f) * m_c.axisU +
+                                        (2.0f * u2 - 1.0f) * m_c.axisV;
     const glm::vec3 toPoint = q - p;
     const float d2 = glm::dot(toPoint, toPoint);
     if (!(d2 > 0.0f)) return s;
     const float d = std::sqrt(d2);
     const glm::vec3 wi = toPoint / d;
-    const float cosLight = -glm::dot(wi, m_normal);
+    const float cosLight = -glm::dot(wi, m_c.normal);
     if (!(cosLight > 0.0f)) return s; // the back face emits nothing
     s.wi = wi;
     s.distance = d;
-    s.value = m_emission;
-    s.pdf = spherical ? 1.0f / sr.solidAngle() : d2 / (m_area * cosLight);
+    s.value = m_c.emission;
+    s.pdf = spherical ? 1.0f / sr.solidAngle() : d2 / (m_c.area * cosLight);
     s.valid = std::isfinite(s.pdf);
     return s;
 }
@@ -194,33 +179,33 @@ LightSample LightSampler::sampleRect(const glm::vec3& p, float u1, float u2) con
 LightSample LightSampler::sampleSun(float u1, float u2) const {
     LightSample s;
     s.distance = kInfinity;
-    s.value = m_emission;
+    s.value = m_c.emission;
     s.valid = true;
-    if (m_delta) {
-        s.wi = -m_normal;
+    if (m_c.delta) {
+        s.wi = -m_c.normal;
         s.pdf = 1.0f;
         s.delta = true;
         return s;
     }
     float sin2 = 0.0f;
-    s.wi = sampleCone(-m_normal, m_oneMinusCosSun, u1, u2, sin2);
-    s.pdf = conePdf(m_oneMinusCosSun);
+    s.wi = sampleCone(-m_c.normal, m_c.oneMinusCosSun, u1, u2, sin2);
+    s.pdf = conePdf(m_c.oneMinusCosSun);
     return s;
 }
 
 float LightSampler::spotFalloff(const glm::vec3& fromLight) const {
-    const float cosAlpha = glm::dot(fromLight, m_normal);
-    if (!(m_cosInner > m_cosOuter)) return cosAlpha >= m_cosOuter ? 1.0f : 0.0f;
-    const float t = std::clamp((cosAlpha - m_cosOuter) / (m_cosInner - m_cosOuter), 0.0f, 1.0f);
+    const float cosAlpha = glm::dot(fromLight, m_c.normal);
+    if (!(m_c.cosInner > m_c.cosOuter)) return cosAlpha >= m_c.cosOuter ? 1.0f : 0.0f;
+    const float t = std::clamp((cosAlpha - m_c.cosOuter) / (m_c.cosInner - m_c.cosOuter), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
 }
 
 float LightSampler::pdf(const glm::vec3& p, const glm::vec3& wi) const {
-    if (m_delta) return 0.0f;
-    switch (m_type) {
+    if (m_c.delta) return 0.0f;
+    switch (m_c.type) {
     case scene::LightType::Sphere: {
-        const glm::vec3 toCentre = m_position - p;
-        const float d2 = glm::dot(toCentre, toCentre), r2 = m_radius * m_radius;
+        const glm::vec3 toCentre = m_c.position - p;
+        const float d2 = glm::dot(toCentre, toCentre), r2 = m_c.radius * m_c.radius;
         if (!(d2 > r2)) return 0.0f;
         const float b = glm::dot(toCentre, wi);
         const glm::vec3 perp = toCentre - b * wi;
@@ -232,13 +217,13 @@ float LightSampler::pdf(const glm::vec3& p, const glm::vec3& wi) const {
         if (!hit) return 0.0f;
         const SphericalRect sr = sphericalRect(p);
         if (sr.solidAngle() >= kMinSphericalRectSolidAngle) return 1.0f / sr.solidAngle();
-        return hit->distance * hit->distance / (m_area * -glm::dot(wi, m_normal));
+        return hit->distance * hit->distance / (m_c.area * -glm::dot(wi, m_c.normal));
     }
     case scene::LightType::Sun: {
-        const glm::vec3 toSun = -m_normal;
+        const glm::vec3 toSun = -m_c.normal;
         const glm::vec3 c = glm::cross(wi, toSun);
-        if (glm::dot(wi, toSun) <= 0.0f || glm::dot(c, c) > m_sin2Sun * kRimSlack2) return 0.0f;
-        return conePdf(m_oneMinusCosSun);
+        if (glm::dot(wi, toSun) <= 0.0f || glm::dot(c, c) > m_c.sin2Sun * kRimSlack2) return 0.0f;
+        return conePdf(m_c.oneMinusCosSun);
     }
     case scene::LightType::Point:
     case scene::LightType::Spot: break;
@@ -248,11 +233,11 @@ float LightSampler::pdf(const glm::vec3& p, const glm::vec3& wi) const {
 
 std::optional<LightHit> LightSampler::evalHit(const glm::vec3& origin, const glm::vec3& dir,
                                               float tMax) const {
-    if (m_delta) return std::nullopt;
-    switch (m_type) {
+    if (m_c.delta) return std::nullopt;
+    switch (m_c.type) {
     case scene::LightType::Sphere: {
-        const glm::vec3 toCentre = m_position - origin;
-        const float d2 = glm::dot(toCentre, toCentre), r2 = m_radius * m_radius;
+        const glm::vec3 toCentre = m_c.position - origin;
+        const float d2 = glm::dot(toCentre, toCentre), r2 = m_c.radius * m_c.radius;
         if (!(d2 > r2)) return std::nullopt;
         const float b = glm::dot(toCentre, dir);
         const glm::vec3 perp = toCentre - b * dir;
@@ -260,23 +245,23 @@ std::optional<LightHit> LightSampler::evalHit(const glm::vec3& origin, const glm
         if (b <= 0.0f || h2 < r2 * (1.0f - kRimSlack2)) return std::nullopt;
         const float t = b - std::sqrt(std::max(0.0f, h2));
         if (!(t > 0.0f && t < tMax)) return std::nullopt;
-        return LightHit{t, m_emission};
+        return LightHit{t, m_c.emission};
     }
     case scene::LightType::Rect: {
-        if (!(m_area > 0.0f)) return std::nullopt;
-        const float facing = glm::dot(dir, m_normal);
+        if (!(m_c.area > 0.0f)) return std::nullopt;
+        const float facing = glm::dot(dir, m_c.normal);
         if (!(facing < 0.0f)) return std::nullopt; // parallel, or seeing the back face
-        const float t = glm::dot(m_position - origin, m_normal) / facing;
+        const float t = glm::dot(m_c.position - origin, m_c.normal) / facing;
         if (!(t > 0.0f && t < tMax)) return std::nullopt;
-        const glm::vec3 local = origin + t * dir - m_position;
-        const float a = glm::dot(local, m_axisU) / glm::dot(m_axisU, m_axisU);
-        const float b = glm::dot(local, m_axisV) / glm::dot(m_axisV, m_axisV);
+        const glm::vec3 local = origin + t * dir - m_c.position;
+        const float a = glm::dot(local, m_c.axisU) / glm::dot(m_c.axisU, m_c.axisU);
+        const float b = glm::dot(local, m_c.axisV) / glm::dot(m_c.axisV, m_c.axisV);
         if (std::abs(a) > kEdgeSlack || std::abs(b) > kEdgeSlack) return std::nullopt;
-        return LightHit{t, m_emission};
+        return LightHit{t, m_c.emission};
     }
     case scene::LightType::Sun: {
         if (tMax != kInfinity || pdf(origin, dir) <= 0.0f) return std::nullopt;
-        return LightHit{kInfinity, m_emission};
+        return LightHit{kInfinity, m_c.emission};
     }
     case scene::LightType::Point:
     case scene::LightType::Spot: break;

@@ -89,10 +89,10 @@ public:
     std::optional<LightHit> evalHit(const glm::vec3& origin, const glm::vec3& dir,
                                     float tMax = std::numeric_limits<float>::infinity()) const;
 
-    bool isDelta() const { return m_delta; }
-    scene::LightType type() const { return m_type; }
+    bool isDelta() const { return m_c.delta; }
+    scene::LightType type() const { return m_c.type; }
     // Emitted radiance of area lights; I = Φ/(4π) for point/spot; E for a delta sun.
-    const glm::vec3& emission() const { return m_emission; }
+    const glm::vec3& emission() const { return m_c.emission; }
 
 private:
     LightSample sampleSphere(const glm::vec3& p, float u1, float u2) const;
@@ -101,16 +101,7 @@ private:
     SphericalRect sphericalRect(const glm::vec3& p) const;
     float spotFalloff(const glm::vec3& fromLight) const;
 
-    scene::LightType m_type;
-    bool m_delta = false;
-    glm::vec3 m_emission{0.0f};
-    glm::vec3 m_position{0.0f};
-    glm::vec3 m_normal{0.0f, -1.0f, 0.0f}; // `direction`, normalised: the way light travels
-    glm::vec3 m_axisU{1.0f, 0.0f, 0.0f}, m_axisV{0.0f, 0.0f, 1.0f}; // Rect: half extents × axes
-    float m_radius = 0.0f;
-    float m_area = 0.0f;
-    float m_cosInner = 1.0f, m_cosOuter = 1.0f;     // Spot
-    float m_sin2Sun = 0.0f, m_oneMinusCosSun = 0.0f; // Sun: sin²θs and 1 − cos θs
+    LightConstants m_c;
 };
 
 } // namespace wavelit::render

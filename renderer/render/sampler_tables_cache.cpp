@@ -1,7 +1,5 @@
 #include "render/sampler_tables_cache.h"
 
-#include "plugins/brdf.h"
-
 #include <string>
 
 namespace wavelit::render {
@@ -16,8 +14,7 @@ bool samePieces(const DirectionSamplerTables& previous, const DirectionSamplerTa
         return false;
     for (size_t i = 0; i < next.materialCount(); ++i) {
         const SamplerMaterial &a = previous.material(i), &b = next.material(i);
-        if (a.name != b.name || a.brdf != b.brdf || a.params.baseColor != b.params.baseColor ||
-            a.params.roughness != b.params.roughness ||
+        if (a.name != b.name || !sameSampling(a, b) ||
             previous.productTables(i) != next.productTables(i))
             return false;
     }
@@ -42,11 +39,10 @@ std::vector<bool> materialsInUse(const scene::Scene& scene) {
     return used;
 }
 
-util::Result<SceneSamplerTables> SamplerTablesCache::update(const scene::Scene& scene,
-                                                            SamplerKind kind) {
+util::Result<std::vector<SceneMaterial>> resolveSceneMaterials(const scene::Scene& scene) {
     std::vector<scene::Material> all = scene.materials;
     all.push_back(scene::Material{}); // the default, as in bvh.cpp and the tracers
-    std::vector<const plugins::Brdf*> brdfs;
+    std::vector<SceneMaterial> out;
     for (size_t i = 0; i < all.size(); ++i) {
         const plugins::Brdf* brdf = plugins::findBrdf(all[i].brdf);
         if (!brdf)
@@ -54,20 +50,28 @@ util::Result<SceneSamplerTables> SamplerTablesCache::update(const scene::Scene& 
                                    "material '" + all[i].name + "' uses unknown BRDF '" +
                                        all[i].brdf + "'",
                                    "/materials/" + std::to_string(i) + "/brdf");
-        brdfs.push_back(brdf);
+        out.push_back({all[i], brdf});
     }
+    return out;
+}
+
+util::Result<SceneSamplerTables> SamplerTablesCache::update(const scene::Scene& scene,
+                                                            SamplerKind kind) {
+    auto all = resolveSceneMaterials(scene);
+    if (!all)
+        return all.error();
     SceneSamplerTables out;
-    out.samplerIndexOfMaterial.assign(all.size(), -1);
+    out.samplerIndexOfMaterial.assign(all->size(), -1);
     if (kind == SamplerKind::Bsdf)
         return out;
 
     const std::vector<bool> used = materialsInUse(scene);
     std::vector<SamplerMaterial> materials;
-    for (size_t i = 0; i < all.size(); ++i)
+    for (size_t i = 0; i < all->size(); ++i)
         if (used[i]) {
+            const scene::Material& m = (*all)[i].material;
             out.samplerIndexOfMaterial[i] = int(materials.size());
-            materials.push_back(
-                {all[i].name, brdfs[i], plugins::BrdfParams{all[i].baseColor, all[i].roughness}});
+            materials.push_back({m.name, (*all)[i].brdf, plugins::BrdfParams{m.baseColor, m.roughness}});
         }
     auto tables = DirectionSamplerTables::build(scene.lighting.environment, std::move(materials),
                                                 kind, m_previous.get(), m_envOptions);

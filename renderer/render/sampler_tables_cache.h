@@ -12,6 +12,7 @@
 // Not thread-safe: driven by the thread that owns the integrator.
 #pragma once
 
+#include "plugins/brdf.h"
 #include "render/direction_sampler.h"
 #include "render/render_options.h"
 #include "render/sampler_environment.h"
@@ -45,6 +46,15 @@ struct SceneSamplerTables {
 // scene material plus the default material at the end (objects whose id matches none).
 // Objects without triangles use nothing (they are not in the BVH).
 std::vector<bool> materialsInUse(const scene::Scene& scene);
+
+// The scene's materials plus the default material at the end (as materialsInUse), each with its
+// BRDF plugin. Errors: a material whose BRDF no plugin implements (Unsupported, naming the
+// material, where "/materials/i/brdf"). Shared by the cache and the CPU tracer.
+struct SceneMaterial {
+    scene::Material material;
+    const plugins::Brdf* brdf = nullptr;
+};
+util::Result<std::vector<SceneMaterial>> resolveSceneMaterials(const scene::Scene& scene);
 
 class SamplerTablesCache {
 public:

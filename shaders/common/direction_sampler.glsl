@@ -155,31 +155,22 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
     return gMass[0];
 }
 
+// Each of two parts' own share of their sum (1/2 each when both are empty).
+void dsParts(double a, double b, out double p0, out double p1) {
+    double whole = a + b;
+    p0 = whole > 0.0LF ? a / whole : 0.5LF;
+    p1 = whole > 0.0LF ? b / whole : 0.5LF;
+}
+
 // Probabilities of the rows below cell (l, x, y) and of the columns given each row: in double
 // from the float masses, each half its own share (1 - p would lose a sun's 1e-6).
 void dsChildProbabilities(int l, int x, int y, out double pRow[2], out double pColumn[4]) {
     int side = 1 << (l + 1), off = pyramidOffset(l + 1);
     int c0 = off + 2 * y * side + 2 * x, c1 = c0 + side;
     double a = gMass[c0], b = gMass[c0 + 1], c = gMass[c1], d = gMass[c1 + 1];
-    double top = a + b, bottom = c + d, sum = top + bottom;
-    pRow[0] = sum > 0.0LF ? top / sum : 0.5LF;
-    pRow[1] = sum > 0.0LF ? bottom / sum : 0.5LF;
-    pColumn[0] = top > 0.0LF ? a / top : 0.5LF;
-    pColumn[1] = top > 0.0LF ? b / top : 0.5LF;
-    pColumn[2] = bottom > 0.0LF ? c / bottom : 0.5LF;
-    pColumn[3] = bottom > 0.0LF ? d / bottom : 0.5LF;
-}
-
-void dsChoose(double p0, double p1, inout double u, inout double probability, out int half_) {
-    if (u < p0) {
-        u = min(u / p0, kBelowOneD);
-        probability *= p0;
-        half_ = 0;
-    } else {
-        u = min((u - p0) / p1, kBelowOneD);
-        probability *= p1;
-        half_ = 1;
-    }
+    dsParts(a + b, c + d, pRow[0], pRow[1]);
+    dsParts(a, b, pColumn[0], pColumn[1]);
+    dsParts(c, d, pColumn[2], pColumn[3]);
 }
 
 // Lobe refinement below the product's leaves (EnvProductSampler's, CPU): for a few levels the four
@@ -219,12 +210,6 @@ void dsRefineWeights(DirSampler s, int l, int x, int y, out double w[4]) {
         for (int c = 0; c < 4; ++c) w[c] *= double(h[c] + kLobeFloor * hmax);
 }
 
-// Each half's own share, as dsChildProbabilities.
-void dsParts(double a, double b, out double p0, out double p1) {
-    double whole = a + b;
-    p0 = whole > 0.0LF ? a / whole : 0.5LF;
-    p1 = whole > 0.0LF ? b / whole : 0.5LF;
-}
 
 int dsRefineLevels(SamplerMaterial sm, int leafLevel, int envLevel) {
     if (!(sm.refineCellAngle > 0.0)) return 0;
@@ -246,9 +231,8 @@ dvec2 dsSampleProduct(DirSampler s, dvec2 u, out double density) {
     for (int l = 0; l < s.m; ++l) {
         double pRow[2], pColumn[4];
         dsChildProbabilities(l, x, y, pRow, pColumn);
-        int cy, cx;
-        dsChoose(pRow[0], pRow[1], u.y, probability, cy);
-        dsChoose(pColumn[2 * cy], pColumn[2 * cy + 1], u.x, probability, cx);
+        int cy = chooseShare(pRow[0], pRow[1], u.y, probability);
+        int cx = chooseShare(pColumn[2 * cy], pColumn[2 * cy + 1], u.x, probability);
         x = 2 * x + cx;
         y = 2 * y + cy;
     }
@@ -259,11 +243,10 @@ dvec2 dsSampleProduct(DirSampler s, dvec2 u, out double density) {
     for (int r = 0; r < s.refineLevels; ++r) {
         double w[4], p0, p1;
         dsRefineWeights(s, l, x, y, w);
-        int cy, cx;
         dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
-        dsChoose(p0, p1, u.y, probability, cy);
+        int cy = chooseShare(p0, p1, u.y, probability);
         dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
-        dsChoose(p0, p1, u.x, probability, cx);
+        int cx = chooseShare(p0, p1, u.x, probability);
         l += 1;
         x = 2 * x + cx;
         y = 2 * y + cy;

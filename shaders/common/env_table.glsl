@@ -23,10 +23,10 @@ void decodeSplit(float s, out double p0, out double p1) {
     }
 }
 
-// Picks the first half with probability p0, rescaling u into [0, 1).
-int chooseHalf(float split, inout double u, inout double probability) {
-    double p0, p1;
-    decodeSplit(split, p0, p1);
+// Picks the first of two parts with probability p0 (else p1), rescaling u into [0, 1) and
+// multiplying `probability` by the choice's. Callers pass each part's own share, so a part with
+// 1e-6 of the mass keeps its digits (1 - p0 would not).
+int chooseShare(double p0, double p1, inout double u, inout double probability) {
     if (u < p0) {
         u = min(u / p0, kBelowOneD);
         probability *= p0;
@@ -35,6 +35,13 @@ int chooseHalf(float split, inout double u, inout double probability) {
     u = min((u - p0) / p1, kBelowOneD);
     probability *= p1;
     return 1;
+}
+
+// A stored split's choice.
+int chooseHalf(float split, inout double u, inout double probability) {
+    double p0, p1;
+    decodeSplit(split, p0, p1);
+    return chooseShare(p0, p1, u, probability);
 }
 
 double powerOfFour(int l) { return double(1u << uint(2 * l)); }
