@@ -6,6 +6,7 @@
 // from what is drawn) or an MIS weight using the wrong sampler's pdf shows up as a block offset.
 #include "render/cpu_path_tracer.h"
 
+#include "render/block_statistics.h"
 #include "render/cpu_analytic_scenes.h"
 #include "render/direction_sampler.h"
 #include "render/sampler_test_envs.h"
@@ -61,12 +62,7 @@ std::shared_ptr<const scene::Scene> studioSphere() {
 }
 
 // Per 8x8 block: the mean over passes of the block's per-pass mean, and its standard error.
-struct BlockStats {
-    double mean[kBlocks] = {};
-    double standardError[kBlocks] = {};
-};
-
-BlockStats render(SamplerKind kind, int passes) {
+BlockStatistics render(SamplerKind kind, int passes) {
     auto scene = studioSphere();
     auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
     RenderOptions o;
@@ -77,10 +73,9 @@ BlockStats render(SamplerKind kind, int passes) {
     o.sampler = kind;
     auto tracer = CpuPathTracer::create(scene, bvh, o, 1);
     EXPECT_TRUE(tracer.ok()) << (tracer.ok() ? "" : tracer.error().message());
-    BlockStats b;
+    BlockStatistics b(kBlocks);
     if (!tracer.ok())
         return b;
-    std::vector<double> sum(kBlocks, 0.0), sum2(kBlocks, 0.0);
     for (int pass = 0; pass < passes; ++pass) {
         std::vector<double> block(kBlocks, 0.0);
         for (int y = 0; y < kSize; ++y)
@@ -90,33 +85,23 @@ BlockStats render(SamplerKind kind, int passes) {
                 block[size_t((y / kBlock) * (kSize / kBlock) + x / kBlock)] +=
                     double(util::luminance(v)) / (kBlock * kBlock);
             }
-        for (int i = 0; i < kBlocks; ++i) {
-            sum[size_t(i)] += block[size_t(i)];
-            sum2[size_t(i)] += block[size_t(i)] * block[size_t(i)];
-        }
-    }
-    for (int i = 0; i < kBlocks; ++i) {
-        const double m = sum[size_t(i)] / passes;
-        const double var = std::max(0.0, sum2[size_t(i)] / passes - m * m) * passes / (passes - 1);
-        b.mean[i] = m;
-        b.standardError[i] = std::sqrt(var / passes);
+        b.addPass(block);
     }
     return b;
 }
 
 TEST(CpuPathTracerSamplers, EverySamplerMatchesTheBsdfReferencePerBlock) {
-    const BlockStats ref = render(SamplerKind::Bsdf, kReferencePasses);
+    const BlockStatistics ref = render(SamplerKind::Bsdf, kReferencePasses);
     for (SamplerKind kind : allSamplerKinds()) {
-        const BlockStats s = render(kind, passesFor(kind));
+        const BlockStatistics s = render(kind, passesFor(kind));
         double worst = 0.0;
-        for (int i = 0; i < kBlocks; ++i) {
-            const double sigma = std::sqrt(s.standardError[i] * s.standardError[i] +
-                                           ref.standardError[i] * ref.standardError[i]);
-            const double z = std::abs(s.mean[i] - ref.mean[i]) / std::max(sigma, 1e-12);
+        for (size_t i = 0; i < kBlocks; ++i) {
+            const double sigma = combinedSigma(s, ref, i);
+            const double z = std::abs(s.mean(i) - ref.mean(i)) / std::max(sigma, 1e-12);
             worst = std::max(worst, z);
-            EXPECT_LE(std::abs(s.mean[i] - ref.mean[i]), kSigmas * sigma + 1e-6 * ref.mean[i])
-                << samplerKindName(kind) << " block " << i << ": " << s.mean[i] << " vs "
-                << ref.mean[i] << " (sigma " << sigma << ")";
+            EXPECT_LE(std::abs(s.mean(i) - ref.mean(i)), kSigmas * sigma + 1e-6 * ref.mean(i))
+                << samplerKindName(kind) << " block " << i << ": " << s.mean(i) << " vs "
+                << ref.mean(i) << " (sigma " << sigma << ")";
         }
         std::printf("[cpu sampler] %-8s worst block |z| = %.2f\n", samplerKindName(kind), worst);
     }

@@ -38,6 +38,15 @@ RenderOptions testOptions(int bounces, int width = kSize, int height = kSize) {
     return o;
 }
 
+// A 32 x 16 equirect image: a horizontal colour ramp, bright sky over a dim ground.
+std::shared_ptr<util::ImageRGB> gradientEnvironment() {
+    auto env = std::make_shared<util::ImageRGB>(32, 16);
+    for (int y = 0; y < env->height; ++y)
+        for (int x = 0; x < env->width; ++x)
+            env->at(x, y) = glm::vec3(0.2f + x / 32.0f, y < 8 ? 2.0f : 0.1f, 0.5f);
+    return env;
+}
+
 std::unique_ptr<Integrator> makeGpu(const std::shared_ptr<scene::Scene>& scene,
                                     const RenderOptions& options) {
     auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
@@ -178,10 +187,7 @@ TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
     mat.baseColor = glm::vec3(0.9f, 0.6f, 0.3f);
     mat.roughness = 0.3f;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 48, 24);
-    auto env = std::make_shared<util::ImageRGB>(32, 16);
-    for (int y = 0; y < env->height; ++y)
-        for (int x = 0; x < env->width; ++x)
-            env->at(x, y) = glm::vec3(0.2f + x / 32.0f, y < 8 ? 2.0f : 0.1f, 0.5f);
+    auto env = gradientEnvironment();
     // A one-texel sun 10^5 x the sky: the tabulated samplers' draws land on it, where a pdf
     // evaluated in the wrong texel would show as a firefly.
     env->at(20, 4) = glm::vec3(1e5f);
@@ -290,10 +296,7 @@ TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
     mat.brdf = "ggx";
     mat.roughness = 0.3f;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 24, 12);
-    auto env = std::make_shared<util::ImageRGB>(32, 16);
-    for (int y = 0; y < env->height; ++y)
-        for (int x = 0; x < env->width; ++x)
-            env->at(x, y) = glm::vec3(0.2f + x / 32.0f, y < 8 ? 2.0f : 0.1f, 0.5f);
+    auto env = gradientEnvironment();
     scene->lighting.environment.image = env;
     RenderOptions options = testOptions(2, 16, 16);
     options.sampler = SamplerKind::Wavelet;

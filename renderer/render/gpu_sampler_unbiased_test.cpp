@@ -7,6 +7,7 @@
 // its per-pass means (one sample per pixel per pass) of both renders. A pdf that differs from what
 // is drawn, a product pyramid decoded wrongly, or MIS weights with the wrong pdf show as offsets.
 // Also: zero validation messages and no NaN/Inf in any pass.
+#include "render/block_statistics.h"
 #include "render/cpu_analytic_scenes.h"
 #include "render/cpu_path_tracer.h"
 #include "render/direction_sampler.h"
@@ -114,8 +115,7 @@ std::shared_ptr<const scene::Scene> makeScene(Lighting lighting, float roughness
 }
 
 struct BlockStats {
-    std::vector<double> mean = std::vector<double>(kBlocks, 0.0);
-    std::vector<double> standardError = std::vector<double>(kBlocks, 0.0);
+    BlockStatistics blocks{kBlocks};
     int validation = 0;
     bool finite = true;
 };
@@ -138,7 +138,6 @@ BlockStats render(const std::shared_ptr<const scene::Scene>& scene, SamplerKind 
     if (!integrator.ok())
         return b;
     Integrator& it = **integrator;
-    std::vector<double> sum(kBlocks, 0.0), sum2(kBlocks, 0.0);
     std::vector<double> previous(size_t(kSize) * kSize, 0.0);
     for (int pass = 0; pass < passes; ++pass) {
         EXPECT_TRUE(it.renderPass().ok());
@@ -159,16 +158,7 @@ BlockStats render(const std::shared_ptr<const scene::Scene>& scene, SamplerKind 
                     (total - previous[i]) / (kBlock * kBlock);
                 previous[i] = total;
             }
-        for (int i = 0; i < kBlocks; ++i) {
-            sum[size_t(i)] += block[size_t(i)];
-            sum2[size_t(i)] += block[size_t(i)] * block[size_t(i)];
-        }
-    }
-    for (int i = 0; i < kBlocks; ++i) {
-        const double m = sum[size_t(i)] / passes;
-        const double var = std::max(0.0, sum2[size_t(i)] / passes - m * m) * passes / (passes - 1);
-        b.mean[size_t(i)] = m;
-        b.standardError[size_t(i)] = std::sqrt(var / passes);
+        b.blocks.addPass(block);
     }
     b.validation = it.validationMessageCount();
     return b;
@@ -195,15 +185,14 @@ TEST_P(GpuSamplerUnbiased, EverySamplerMatchesTheCpuReferencePerBlock) {
         EXPECT_EQ(s.validation, 0) << samplerKindName(kind);
         double worst = 0.0;
         int within3 = 0;
-        for (int i = 0; i < kBlocks; ++i) {
-            const double sigma = std::sqrt(s.standardError[size_t(i)] * s.standardError[size_t(i)] +
-                                           ref.standardError[size_t(i)] * ref.standardError[size_t(i)]);
-            const double z = std::abs(s.mean[size_t(i)] - ref.mean[size_t(i)]) /
-                             std::max(sigma, 1e-9 * ref.mean[size_t(i)] + 1e-12);
+        for (size_t i = 0; i < kBlocks; ++i) {
+            const double sigma = combinedSigma(s.blocks, ref.blocks, i);
+            const double difference = std::abs(s.blocks.mean(i) - ref.blocks.mean(i));
+            const double z = difference / std::max(sigma, 1e-9 * ref.blocks.mean(i) + 1e-12);
             worst = std::max(worst, z);
             within3 += z <= 3.0 ? 1 : 0;
             EXPECT_LE(z, kFailSigmas) << samplerKindName(kind) << " block " << i << ": "
-                                      << s.mean[size_t(i)] << " vs " << ref.mean[size_t(i)]
+                                      << s.blocks.mean(i) << " vs " << ref.blocks.mean(i)
                                       << " (sigma " << sigma << ")";
         }
         std::printf("[gpu unbiased] %s r=%.2f %-8s worst |z| %.2f, %d/%d blocks within 3 SE\n",
