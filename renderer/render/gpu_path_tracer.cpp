@@ -11,6 +11,7 @@
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iterator>
@@ -93,6 +94,9 @@ private:
     // Direction-sampler tables, rebuilt per change set only where invalidated.
     SamplerTablesCache m_tablesCache;
     SceneSamplerTables m_samplerTables;
+    // What the uploaded sampler buffers need in the params block (GpuParams::samplerInfo/Env).
+    uint32_t m_samplerInfo[4] = {0, 0, 0, 0};
+    float m_samplerEnvMean = 0.0f;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
@@ -124,10 +128,8 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_options = options;
     pt->m_timings.bvhBuildSeconds = pt->m_bvh->buildSeconds;
 
-    if (options.sampler == SamplerKind::Oracle)
-        return util::makeError(util::ErrorKind::Unsupported, "",
-                               "sampler 'oracle' runs on the CPU only (its dense per-point "
-                               "product at full resolution has no GPU form; use --device cpu)");
+    if (auto supported = checkGpuSampler(options.sampler); !supported)
+        return supported.error();
     // Fail on an unsupported material before any device work.
     if (auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options); !packed)
         return packed.error();
@@ -197,20 +199,33 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     GpuSceneData& d = *packed;
     GpuSamplerData samplers;
     SceneSamplerTables samplerTables;
+    bool uploadSamplers = false;
+    uint32_t samplerInfo[4] = {m_samplerInfo[0], m_samplerInfo[1], m_samplerInfo[2], m_samplerInfo[3]};
+    float samplerEnvMean = m_samplerEnvMean;
     if (usesDirectionSamplers()) {
         auto tables = m_tablesCache.update(scene, m_options.sampler);
         if (!tables)
             return tables.error();
         samplerTables = std::move(tables.value());
-        auto packedSamplers = packGpuSamplers(samplerTables, m_options.sampler, d.materials.size());
-        if (!packedSamplers)
-            return packedSamplers.error();
-        samplers = std::move(packedSamplers.value());
-        d.params.samplerInfo[0] = samplers.kind;
-        d.params.samplerInfo[1] = samplers.lit ? 1u : 0u;
-        d.params.samplerInfo[2] = samplers.tailOffset;
-        d.params.samplerInfo[3] = samplers.envLevel;
-        d.params.samplerEnv[0] = samplers.envMean;
+        // The cache hands back the same tables when an edit invalidated none of them (an object
+        // move, a light edit): the sampler buffers on the device are then still right, and
+        // re-packing them (the env table alone is ~22 MiB at 1024^2) would stall every drag.
+        uploadSamplers = samplerTables.tables != m_samplerTables.tables ||
+                         samplerTables.samplerIndexOfMaterial != m_samplerTables.samplerIndexOfMaterial;
+        if (uploadSamplers) {
+            auto packedSamplers =
+                packGpuSamplers(samplerTables, m_options.sampler, d.materials.size());
+            if (!packedSamplers)
+                return packedSamplers.error();
+            samplers = std::move(packedSamplers.value());
+            samplerInfo[0] = samplers.kind;
+            samplerInfo[1] = samplers.lit ? 1u : 0u;
+            samplerInfo[2] = samplers.tailOffset;
+            samplerInfo[3] = samplers.envLevel;
+            samplerEnvMean = samplers.envMean;
+        }
+        std::copy(std::begin(samplerInfo), std::end(samplerInfo), d.params.samplerInfo);
+        d.params.samplerEnv[0] = samplerEnvMean;
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     struct Upload {
@@ -240,8 +255,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         {kSamplerWords, &m_samplerWords, samplers.words.data(),
          samplers.words.size() * sizeof(uint32_t), kStorage, "sampler tables"},
     };
-    // The first six are the scene's; the last three exist only with direction samplers.
-    const size_t uploadCount = usesDirectionSamplers() ? std::size(uploads) : 6;
+    // The first six are the scene's; the last three exist only with direction samplers, and are
+    // re-sent only when their tables changed.
+    const size_t uploadCount = uploadSamplers ? std::size(uploads) : 6;
     std::vector<vk::Buffer> fresh;
     for (size_t i = 0; i < uploadCount; ++i) {
         const Upload& u = uploads[i];
@@ -255,6 +271,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         m_kernel.bind(uploads[i].binding, *uploads[i].target);
     }
     m_samplerTables = std::move(samplerTables);
+    std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
+    m_samplerEnvMean = samplerEnvMean;
     return util::okStatus();
 }
 
