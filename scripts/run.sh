@@ -18,10 +18,10 @@ build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr
     --spp "${WAVELIT_SPP:-16}" --report out/ring_on_ground_report.json "$@"
 build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.png \
     --spp "${WAVELIT_SPP:-16}" "$@" >/dev/null
-# Speed vs error: the GPU samplers at equal time against a longer reference (RMSE curves). The
-# oracle is left out here: on the CPU one of its passes takes minutes (--samplers to add it).
+# Speed vs error: every sampler at equal time on the default device against a longer reference
+# (RMSE curves); the oracle is the ideal the wavelet sampler's efficiency is measured against.
 build/release/renderer/cli/wavelit-cli bench "$scene" --time "${WAVELIT_BENCH_SECONDS:-3}" \
-    --samplers uniform,cosine,bsdf,env,mis,wavelet --width 128 --height 128 --out out/bench
+    --samplers uniform,cosine,bsdf,env,mis,wavelet,oracle --width 128 --height 128 --out out/bench
 echo "run: images at $(pwd)/out/ring_on_ground.exr and $(pwd)/out/ring_on_ground.png"
 echo "run: render report at $(pwd)/out/ring_on_ground_report.json"
 echo "run: speed/error report at $(pwd)/out/bench/bench.{json,csv,png}"

@@ -83,8 +83,11 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
         const size_t bytes = p ? p->bytes() : 0;
         const std::string reason =
             p ? p->policy().reason
-              : std::string("the ") + render::samplerKindName(t.kind()) +
-                    " sampler needs no per-material tables";
+            : t.kind() == render::SamplerKind::Oracle
+                ? std::string("the oracle builds a dense product per hit (CPU 128^2; Vulkan 32^2 "
+                              "env-weighted + 2 refinement levels): no per-material tables")
+                : std::string("the ") + render::samplerKindName(t.kind()) +
+                      " sampler needs no per-material tables";
         j << (i ? ",\n" : "\n") << "      {\"name\": \"" << jsonEscape(t.material(i).name)
           << "\", \"mode\": \"" << productModeName(p) << "\", \"reason\": \"" << jsonEscape(reason)
           << "\", \"binLevel\": " << (p ? p->policy().binLevel : 0)

@@ -41,11 +41,6 @@ util::Result<render::RenderOptions> renderOptionsFromArgs(const Args& args,
         if (!sampler) return sampler.error();
         o.sampler = *sampler;
     }
-    // A combination no device can serve is a usage error, caught before any scene work.
-    if (o.device == render::DeviceChoice::Vulkan && o.sampler == render::SamplerKind::Oracle)
-        return util::makeError(util::ErrorKind::Usage, "",
-                               "--sampler oracle runs on the CPU only (a dense full-resolution "
-                               "product per shading point): use --device cpu or auto");
     return o;
 }
 

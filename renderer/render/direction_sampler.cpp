@@ -15,12 +15,6 @@ namespace {
 
 // One-sample MIS of two techniques at 1/2 each (the `mis` kind).
 constexpr double kMisWeight = 0.5;
-// The oracle's defensive share: small, so it stays close to the ideal, but non-zero so tails
-// outside its window (and cells the dense grid saw as zero) keep support.
-constexpr double kOracleBsdf = 0.05;
-// 3 lobe half-widths of 2 alpha: the wavelet policy's former cap (it now covers 4.5), kept so the
-// oracle's figures stay comparable across the variance study's runs (docs/sampler-variance.md).
-constexpr double kOracleCapPerAlpha = 6.0;
 // The env share of the product mixtures: never 0 (full support for bright tails the estimates
 // below miss) and never all (the lobe technique keeps most of its samples).
 // (0.05 before the lobe refinement: every defensive share c costs ~c in Var/I^2 where the lobe
@@ -171,8 +165,8 @@ void DirectionSampler::addProduct(SamplerKind kind) {
         m_describe = std::string(samplerKindName(kind)) + ": black environment, bsdf";
         return;
     }
-    double bsdfShare = kOracleBsdf;
-    double capAngle = lambert ? 3.2 : kOracleCapPerAlpha * ggxAlpha(m_material->params.roughness);
+    double bsdfShare = kOracleBsdfShare;
+    double capAngle = oracleCapHalfAngle(lambert, m_material->params.roughness);
     if (kind == SamplerKind::Oracle) {
         m_product = buildOracleProduct(env, axis, capAngle, brdfCosLocal);
         m_describe = m_product ? "oracle: dense 128^2 product, refined" : "oracle: all-zero "

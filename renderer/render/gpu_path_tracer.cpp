@@ -128,8 +128,6 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_options = options;
     pt->m_timings.bvhBuildSeconds = pt->m_bvh->buildSeconds;
 
-    if (auto supported = checkGpuSampler(options.sampler); !supported)
-        return supported.error();
     // Fail on an unsupported material before any device work.
     if (auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options); !packed)
         return packed.error();
@@ -156,6 +154,9 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     // `bsdf` compiles without the samplers: no private product pyramid, no doubles.
     if (pt->usesDirectionSamplers())
         compile.defines.push_back("WAVELIT_DIRECTION_SAMPLERS=1");
+    // Only the oracle needs the larger private pyramid (2^5 leaves instead of 2^4).
+    if (options.sampler == SamplerKind::Oracle)
+        compile.defines.push_back("WAVELIT_ORACLE_SAMPLER=1");
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     auto spirv = vk::compileComputeShaderFile(shaderPath, compile);

@@ -205,8 +205,8 @@ TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
     scene->objects.push_back(ground);
 
     // Every sampler whose GPU form draws as its CPU form does (the same techniques from the same
-    // numbers; `wavelet` builds its product differently on the GPU and is judged statistically in
-    // gpu_sampler_unbiased_test.cpp; `oracle` is CPU only).
+    // numbers; `wavelet` and `oracle` build their products differently on the GPU and are judged
+    // statistically in gpu_product_sampler_test.cpp and gpu_sampler_unbiased_test.cpp).
     for (SamplerKind kind : {SamplerKind::Bsdf, SamplerKind::Uniform, SamplerKind::Cosine,
                              SamplerKind::Env, SamplerKind::Mis}) {
         RenderOptions options = testOptions(4);

@@ -1,5 +1,7 @@
 #include "render/gpu_sampler_data.h"
 
+#include "render/oracle_sampler.h"
+
 #include <algorithm>
 #include <bit>
 #include <string>
@@ -11,18 +13,25 @@ size_t GpuSamplerData::bytes() const {
            words.size() * sizeof(uint32_t);
 }
 
-util::Status checkGpuSampler(SamplerKind kind) {
-    if (kind == SamplerKind::Oracle)
-        return util::makeError(util::ErrorKind::Unsupported, "",
-                               "sampler 'oracle' runs on the CPU only (its dense per-point "
-                               "product at full resolution has no GPU form; use --device cpu)");
-    return util::okStatus();
+namespace {
+
+// The oracle needs no tables: its material entry says how to fit and mix the per-hit product.
+GpuSamplerMaterial oracleMaterial(const SamplerMaterial& m) {
+    const bool lambert = std::string(m.brdf->name()) == "lambert";
+    GpuSamplerMaterial g;
+    g.mode = kGpuSamplerOracle;
+    g.mixBsdf = float(kOracleBsdfShare);
+    g.capHalfAngle = float(oracleCapHalfAngle(lambert, m.params.roughness));
+    g.aroundNormal = lambert ? 1u : 0u;
+    g.refineMaxLevels = kGpuOracleRefineLevels;
+    g.refineCellAngle = 1e-30f; // refine by level count only
+    return g;
 }
+
+} // namespace
 
 util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
                                              size_t gpuMaterialCount) {
-    if (auto supported = checkGpuSampler(kind); !supported)
-        return supported.error();
     GpuSamplerData d;
     d.kind = uint32_t(kind);
     d.materials.assign(gpuMaterialCount, GpuSamplerMaterial{});
@@ -39,6 +48,10 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             const int index = tables.samplerIndexOfMaterial[i];
             if (index < 0)
                 continue;
+            if (kind == SamplerKind::Oracle) {
+                d.materials[i] = oracleMaterial(t.material(size_t(index)));
+                continue;
+            }
             const MaterialProductTables* product = t.productTables(size_t(index));
             if (!product)
                 continue; // kinds other than wavelet: the material needs nothing

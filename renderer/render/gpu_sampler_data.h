@@ -22,6 +22,7 @@ namespace wavelit::render {
 inline constexpr uint32_t kGpuSamplerBsdfOnly = 0;
 inline constexpr uint32_t kGpuSamplerProduct = 1;
 inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
+inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense product
 // The finest product level the shader forms per hit (2^4 x 2^4 leaves; finer table details are
 // not synthesised: the env's quadtree refines below the leaves) and the tail estimate's cells
 // (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
@@ -29,6 +30,15 @@ inline constexpr int kGpuMaxProductLevel = 4;
 inline constexpr int kGpuTailLevel = 3;
 // The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower).
 inline constexpr double kGpuMinBsdfShare = 0.1;
+
+// The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the
+// exact axis, like the CPU's (oracle_sampler.h), but at 2^5 x 2^5 leaves, each the mean of
+// L x BRDF x cos over its 2 x 2 sub-cells (env-weighted, so the leaf masses are those of the 64^2
+// product), then 2 levels of lobe refinement (env split x BRDF x cos at the children's centres)
+// down to the CPU oracle's 2^7 resolution, then the env's quadtree. The CPU's 128^2 grid would
+// take 21 KiB of private memory and ~65k BRDF evaluations per hit; this one ~4k.
+inline constexpr int kGpuOracleLevel = 5;
+inline constexpr uint32_t kGpuOracleRefineLevels = 2;
 
 // Mirrors `struct SamplerMaterial` in path_tracer.comp (std430).
 struct GpuSamplerMaterial {
@@ -58,12 +68,8 @@ struct GpuSamplerData {
     size_t bytes() const;
 };
 
-// Whether the Vulkan tracer can run `kind`: Unsupported for `oracle` (its dense per-point product
-// at full resolution has no GPU form), ok otherwise.
-util::Status checkGpuSampler(SamplerKind kind);
-
 // `tables` from SamplerTablesCache::update; gpuMaterialCount = scene materials + 1 (the
-// default). Errors (Unsupported): checkGpuSampler's, and a product level below 1.
+// default). Errors (Unsupported): a product level below 1.
 util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
                                              size_t gpuMaterialCount);
 

@@ -1,10 +1,16 @@
 #include "render/oracle_sampler.h"
 
+#include "render/env_product_tables.h"
 #include "render/sampler_window.h"
 
 #include <algorithm>
 
 namespace wavelit::render {
+
+double oracleCapHalfAngle(bool lambert, float roughness) {
+    constexpr double kCapPerAlpha = 6.0;
+    return lambert ? 3.2 : kCapPerAlpha * ggxAlpha(roughness);
+}
 
 std::optional<EnvProductSampler>
 buildOracleProduct(const SamplerEnvironment& env, const glm::dvec3& axisLocal, double capHalfAngle,

@@ -17,6 +17,15 @@
 
 namespace wavelit::render {
 
+// The oracle's defensive BSDF share: small, so it stays close to the ideal, but non-zero so tails
+// outside its window (and cells the dense grid saw as zero) keep support.
+inline constexpr double kOracleBsdfShare = 0.05;
+
+// The lobe cap the oracle's window is fitted to: 3 lobe half-widths of 2 alpha for GGX (the
+// wavelet policy's former cap, kept so the oracle's figures stay comparable across the variance
+// study's runs, docs/sampler-variance.md); the whole sphere for Lambert. Shared by both tracers.
+double oracleCapHalfAngle(bool lambert, float roughness);
+
 struct OracleOptions {
     int productLevel = 7;     // 128^2 over the window
     int depthBelowEnv = 6;    // windows may shrink until product texels are 2^-6 env texels

@@ -12,8 +12,8 @@ namespace wavelit::render {
 enum class DeviceChoice { Auto, Vulkan, Cpu };
 
 // Direction samplers for the speed/error report (DESIGN.md §5.B). The CPU reference tracer runs all
-// of them (render/direction_sampler.h); the Vulkan tracer all but Oracle (a dense full-resolution
-// product per point), for which it reports Unsupported and Auto falls back to the CPU tracer.
+// of them (render/direction_sampler.h), and so does the Vulkan tracer (shaders/common/
+// direction_sampler.glsl; its Oracle is dense at a coarser grid, gpu_sampler_data.h).
 // The CLI and the editor default to Wavelet; RenderOptions' own default is Bsdf (no tables).
 enum class SamplerKind { Uniform, Cosine, Bsdf, Env, Mis, Wavelet, Oracle };
 

@@ -3,6 +3,7 @@
 #include "render/render_session.h"
 
 #include "render/cpu_analytic_scenes.h"
+#include "render/direction_sampler.h"
 #include "scene/scene_io.h"
 
 #include <gtest/gtest.h>
@@ -59,28 +60,16 @@ TEST(RenderSession, DefaultSceneRendersOnVulkanWithoutValidationMessages) {
     EXPECT_NE(stats.deviceName.find("vulkan"), std::string::npos);
 }
 
-TEST(RenderSession, OracleIsCpuOnlyAndAutoRendersItOnTheCpu) {
+TEST(RenderSession, EverySamplerRunsOnVulkan) {
     scene::Material mat;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 8, 4);
     RenderOptions o = smallVulkan();
-    o.sampler = SamplerKind::Oracle;
-    auto session = RenderSession::create(*scene, o);
-    ASSERT_FALSE(session.ok());
-    EXPECT_EQ(session.error().kind, util::ErrorKind::Unsupported);
-    EXPECT_NE(session.error().message().find("CPU only"), std::string::npos);
-    o.device = DeviceChoice::Auto;
-    o.width = o.height = 4;
-    auto fallback = RenderSession::create(*scene, o);
-    ASSERT_TRUE(fallback.ok()) << fallback.error().message();
-    EXPECT_EQ((*fallback)->stats().deviceName.find("vulkan"), std::string::npos);
-    // Every other sampler runs on Vulkan.
-    for (SamplerKind kind : {SamplerKind::Uniform, SamplerKind::Cosine, SamplerKind::Bsdf,
-                             SamplerKind::Env, SamplerKind::Mis, SamplerKind::Wavelet}) {
-        o.device = DeviceChoice::Vulkan;
+    for (SamplerKind kind : allSamplerKinds()) {
         o.sampler = kind;
         auto onGpu = RenderSession::create(*scene, o);
         ASSERT_TRUE(onGpu.ok()) << samplerKindName(kind) << ": " << onGpu.error().message();
         ASSERT_TRUE((*onGpu)->renderPass().ok());
+        EXPECT_NE((*onGpu)->stats().deviceName.find("vulkan"), std::string::npos);
         EXPECT_EQ((*onGpu)->stats().validationMessages, 0) << samplerKindName(kind);
     }
 }

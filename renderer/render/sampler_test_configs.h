@@ -1,7 +1,7 @@
 // The six shading configurations every direction sampler is judged at (issue 6 acceptance:
 // grazing view at 85 degrees, a mirror-like r = 0.02 lobe, rough and diffuse ones), on a tilted
 // frame so nothing lines up with the world or map axes by accident. Shared by the CPU sampler tests
-// (direction_sampler_test.cpp) and the Vulkan ones (gpu_wavelet_sampler_test.cpp), so both judge
+// (direction_sampler_test.cpp) and the Vulkan ones (gpu_product_sampler_test.cpp), so both judge
 // the same cases. Header-only; tests only.
 #pragma once
 

@@ -12,6 +12,12 @@
 //                           refined below its leaves by the env's own quadtree (§4.1 item 1);
 //                           mixed with bsdf (defensive) and env with the CPU's share rule.
 //                           Lobes the env cannot resolve (policy BsdfLobe): bsdf + env.
+//   oracle                  per hit: a DENSE product (env cell averages x BRDF x cos at 2 x 2
+//                           sub-cells per leaf, 2^5 x 2^5 leaves) over a window fitted to the lobe
+//                           around the exact axis (sampler_window.h's chooseWindow), refined by 2
+//                           levels of the lobe refinement and then the env's quadtree; mixed as
+//                           the CPU's oracle (bsdf 0.05, env share >= 0.02). Compiled with
+//                           WAVELIT_ORACLE_SAMPLER (its private pyramid is 4x the wavelet's).
 //
 // The including shader declares, before including this file:
 //   struct EnvNode { float py0, px0y0, px0y1; int firstChild; };  buffer { EnvNode envNodes[]; };
@@ -41,11 +47,13 @@ const uint kSamplerBsdf = 2u;
 const uint kSamplerEnv = 3u;
 const uint kSamplerMis = 4u;
 const uint kSamplerWavelet = 5u;
+const uint kSamplerOracle = 6u;
 
 // SamplerMaterial.mode (render/gpu_sampler_data.h).
 const uint kModeBsdfOnly = 0u;
 const uint kModeProduct = 1u;
 const uint kModeBsdfLobe = 2u;
+const uint kModeOracle = 3u;
 
 // The mixture's constants. The CPU's minimum env share is 0.02 since its product gained the lobe
 // refinement below the leaves; the GPU's coarser product (2^4 leaves, no lobe refinement) keeps
@@ -61,7 +69,17 @@ const float kFourPi = 4.0 * kPi;
 // (render/gpu_sampler_data.h kGpuMaxProductLevel) even where the tables hold finer details: the
 // per-hit cost is ~4^m BRDF evaluations, and below the leaves the env's quadtree refines anyway.
 const int kMaxProductLevel = 4;
-float gMass[341];
+// The oracle's dense grid (render/gpu_sampler_data.h kGpuOracleLevel) and how far below the env's
+// texels its window may shrink (OracleOptions::depthBelowEnv), and its smallest env share (the
+// CPU oracle's).
+const int kOracleLevel = 5;
+const int kOracleDepthBelowEnv = 6;
+const double kOracleMinEnvShare = 0.02LF;
+#ifdef WAVELIT_ORACLE_SAMPLER
+float gMass[1365]; // levels 0..5
+#else
+float gMass[341]; // levels 0..4
+#endif
 int gNode[85];
 
 struct DirSampler {
@@ -99,6 +117,19 @@ float dsBrdfCos(DirSampler s, vec3 wiWorld) {
 }
 
 // --- the product -------------------------------------------------------------------------
+
+// Sums the leaves (level m) of gMass up to its root; returns the total.
+float dsSumPyramid(int m) {
+    for (int l = m - 1; l >= 0; --l) {
+        int sideL = 1 << l, offL = pyramidOffset(l), offC = pyramidOffset(l + 1);
+        for (int y = 0; y < sideL; ++y)
+            for (int x = 0; x < sideL; ++x) {
+                int c0 = offC + 2 * y * (2 * sideL) + 2 * x, c1 = c0 + 2 * sideL;
+                gMass[offL + y * sideL + x] = gMass[c0] + gMass[c0 + 1] + gMass[c1] + gMass[c1 + 1];
+            }
+    }
+    return gMass[0];
+}
 
 // Decodes the env factor of `factor` (truncated Haar, SparseHaar's tree) to scaling
 // coefficients at level m (haar.h's synthesis), multiplies each cell's average by BRDF x cos at
@@ -144,15 +175,107 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
             float e = max(0.0, gMass[off + y * side + x] * float(side));
             gMass[off + y * side + x] = e > 0.0 ? e * dsBrdfCos(s, d) : 0.0;
         }
-    for (int l = m - 1; l >= 0; --l) {
-        int sideL = 1 << l, offL = pyramidOffset(l), offC = pyramidOffset(l + 1);
-        for (int y = 0; y < sideL; ++y)
-            for (int x = 0; x < sideL; ++x) {
-                int c0 = offC + 2 * y * (2 * sideL) + 2 * x, c1 = c0 + 2 * sideL;
-                gMass[offL + y * sideL + x] = gMass[c0] + gMass[c0 + 1] + gMass[c1] + gMass[c1 + 1];
-            }
+    return dsSumPyramid(m);
+}
+
+// --- the oracle's dense product ---------------------------------------------------------------
+
+// The smallest window (k <= maxK) holding the octahedral image of the cap of half-angle
+// `halfAngle` around `axis` (env-local): render::chooseWindow's twin, probing 48 rim points on the
+// cap's edge and at half its angle; an image wider than half the square gets the whole square.
+void dsChooseWindow(vec3 axis, float halfAngle, int maxK, out int k, out int ox, out int oy) {
+    k = 0;
+    ox = 0;
+    oy = 0;
+    if (halfAngle >= 1.2 || maxK < 1) return;
+    vec3 a = normalize(axis);
+    vec3 helper = abs(a.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    vec3 t = normalize(cross(helper, a));
+    vec3 b = cross(a, t);
+    vec2 lo = octToSquare(a), hi = lo;
+    for (int ring = 0; ring < 2; ++ring) {
+        float theta = (ring == 0 ? 1.0 : 0.5) * halfAngle;
+        for (int i = 0; i < 48; ++i) {
+            float phi = 2.0 * kPi * float(i) / 48.0;
+            vec3 d = cos(theta) * a + sin(theta) * (cos(phi) * t + sin(phi) * b);
+            vec2 p = octToSquare(d);
+            lo = min(lo, p);
+            hi = max(hi, p);
+        }
     }
-    return gMass[0];
+    if (hi.x - lo.x > 0.5 || hi.y - lo.y > 0.5) return;
+    for (int kk = maxK; kk >= 1; --kk) {
+        double side = 1.0LF / double(1 << kk), halfSide = 0.5LF * side;
+        int maxOrigin = (1 << (kk + 1)) - 2;
+        int x0 = clamp(int(floor(double(lo.x) / halfSide)), 0, maxOrigin);
+        int y0 = clamp(int(floor(double(lo.y) / halfSide)), 0, maxOrigin);
+        if (double(x0) * halfSide + side >= double(hi.x) && double(y0) * halfSide + side >= double(hi.y)) {
+            k = kk;
+            ox = x0;
+            oy = y0;
+            return;
+        }
+    }
+}
+
+// The env's share of its total luminance in cell (l, x, y), by its quadtree's splits (uniform
+// below the tree's leaves); `node` is the cell's node when `exact`, else a leaf above the cell.
+double envCellMass(int l, int x, int y, out int node, out bool exact) {
+    node = 0;
+    int reached = 0;
+    double mass = 1.0LF;
+    while (reached < l && envNodes[node].firstChild >= 0) {
+        int shift = l - reached - 1;
+        int cx = (x >> shift) & 1, cy = (y >> shift) & 1;
+        EnvNode n = envNodes[node];
+        double py0, py1, px0, px1;
+        decodeSplit(n.py0, py0, py1);
+        decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, px0, px1);
+        mass *= (cy == 0 ? py0 : py1) * (cx == 0 ? px0 : px1);
+        node = n.firstChild + cx + 2 * cy;
+        ++reached;
+    }
+    exact = reached == l;
+    return mass / powerOfFour(l - reached);
+}
+
+// The oracle's leaves: each the mean over its 2 x 2 sub-cells of (env average there) x BRDF x cos
+// at the sub-cell's centre, i.e. the masses of the dense product one level finer (the CPU's
+// windowTabulateEnvWeighted x windowEnvGrid). Returns the total (0: nothing to sample).
+float dsBuildOracleProduct(DirSampler s, float envMean) {
+    int m = s.m, side = 1 << m, off = pyramidOffset(m);
+    int level = s.k + m;
+    double windowSide = 1.0LF / double(1 << s.k);
+    dvec2 origin = dvec2(s.ox, s.oy) * (0.5LF * windowSide);
+    double subSide = windowSide / double(2 * side);
+    double toAverage = powerOfFour(level + 1) * double(envMean);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            int node;
+            bool exact;
+            double mass = envCellMass(level, (s.ox << (m - 1)) + x, (s.oy << (m - 1)) + y, node, exact);
+            double sub[4] = double[4](0.25LF * mass, 0.25LF * mass, 0.25LF * mass, 0.25LF * mass);
+            if (exact && envNodes[node].firstChild >= 0) {
+                EnvNode n = envNodes[node];
+                double py0, py1, pl0, pr0, pl1, pr1;
+                decodeSplit(n.py0, py0, py1);
+                decodeSplit(n.px0y0, pl0, pr0);
+                decodeSplit(n.px0y1, pl1, pr1);
+                sub[0] = mass * py0 * pl0;
+                sub[1] = mass * py0 * pr0;
+                sub[2] = mass * py1 * pl1;
+                sub[3] = mass * py1 * pr1;
+            }
+            float sum = 0.0;
+            for (int c = 0; c < 4; ++c) {
+                if (!(sub[c] > 0.0LF)) continue;
+                dvec2 p = origin + (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * subSide;
+                vec3 d = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
+                sum += float(sub[c] * toAverage) * dsBrdfCos(s, d);
+            }
+            gMass[off + y * side + x] = 0.25 * sum;
+        }
+    return dsSumPyramid(m);
 }
 
 // Each of two parts' own share of their sum (1/2 each when both are empty).
@@ -383,7 +506,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         s.cEnv = 0.5;
         return s;
     }
-    // wavelet
+    // wavelet, oracle
     if (sm.mode == kModeBsdfOnly) {
         s.cBsdf = 1.0;
         return s;
@@ -393,6 +516,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     vec3 axisLocal = normalize(envToLocal(g.cosSinYaw, axisWorld));
     bool product = false;
     double lobeMoment = 0.0LF;
+    float total = 0.0;
     if (sm.mode == kModeProduct) {
         uint header = sm.tableOffset;
         int b = int(samplerWords[header + 1u]);
@@ -405,7 +529,15 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         s.oy = int(samplerWords[binWords + 2u]);
         s.m = min(int(samplerWords[header + 2u]), kMaxProductLevel);
         s.refineLevels = dsRefineLevels(sm, s.k + s.m, g.envLevel);
-        float total = dsBuildProduct(s, sm, samplerWords[binWords + 3u]);
+        total = dsBuildProduct(s, sm, samplerWords[binWords + 3u]);
+    } else if (sm.mode == kModeOracle) {
+        int maxK = max(1, g.envLevel + kOracleDepthBelowEnv - kOracleLevel);
+        dsChooseWindow(axisLocal, sm.capHalfAngle, maxK, s.k, s.ox, s.oy);
+        s.m = kOracleLevel;
+        s.refineLevels = dsRefineLevels(sm, s.k + s.m, g.envLevel);
+        total = dsBuildOracleProduct(s, g.envMean);
+    }
+    if (sm.mode == kModeProduct || sm.mode == kModeOracle) {
         product = total > 0.0;
         if (product) {
             // The product's integral over the window's solid angle: its second moment is close
@@ -418,7 +550,8 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     if (!product) lobeMoment = dsBsdfLobeMoment(s, g);
     double tail = dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
     double a = sqrt(max(tail, 0.0LF)), bm = sqrt(max(lobeMoment, 0.0LF));
-    double envShare = clamp(a / max(a + bm, 1e-300LF), kMinEnvShare, kMaxEnvShare);
+    double minEnvShare = sm.mode == kModeOracle ? kOracleMinEnvShare : kMinEnvShare;
+    double envShare = clamp(a / max(a + bm, 1e-300LF), minEnvShare, kMaxEnvShare);
     if (product) {
         s.cProduct = float(1.0LF - envShare - double(sm.mixBsdf));
         s.cBsdf = sm.mixBsdf;

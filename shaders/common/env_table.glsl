@@ -44,7 +44,11 @@ int chooseHalf(float split, inout double u, inout double probability) {
     return chooseShare(p0, p1, u, probability);
 }
 
-double powerOfFour(int l) { return double(1u << uint(2 * l)); }
+// 4^l for l <= 31 (the oracle's sub-cells reach level 17: 1u << 2l would overflow).
+double powerOfFour(int l) {
+    double side = double(1u << uint(l));
+    return side * side;
+}
 
 // The node of cell (l, x, y), or of its deepest ancestor where the tree is constant above it;
 // `reached` is that node's level.

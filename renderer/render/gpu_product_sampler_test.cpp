@@ -1,18 +1,21 @@
-// The Vulkan `wavelet` sampler (shaders/common/direction_sampler.glsl) judged on its own: its
-// per-hit product is built differently from the CPU's (dense at the cell centres, see the GLSL),
-// so the twin test cannot cover it. For the six shading configurations of direction_sampler_test
-// (grazing 85 degrees, mirror-like r = 0.02, Lambert, ...) under the studio env and a sky with a
-// 10^6 sun, the GPU draws 40k directions per configuration and reports what its mixture was built
-// from (weights, window, product pyramid). The pdf those pieces define is evaluated on the CPU
-// (the env tables are the same object the GPU got; the BSDF is the C++ twin of the GLSL plugin);
-// then:
+// The Vulkan `wavelet` and `oracle` samplers (shaders/common/direction_sampler.glsl) judged on
+// their own: their per-hit products are built differently from the CPU's (wavelet: dense at the
+// cell centres; oracle: a coarser dense grid, see the GLSL), so the twin test cannot cover them.
+// For the six shading configurations of direction_sampler_test (grazing 85 degrees, mirror-like
+// r = 0.02, Lambert, ...) under the studio env and a sky with a 10^6 sun, the GPU draws 40k
+// directions per configuration and reports what its mixture was built from (weights, window,
+// product pyramid). The pdf those pieces define is evaluated on the CPU (the env tables are the
+// same object the GPU got; the BSDF is the C++ twin of the GLSL plugin); then:
 //  - chi-square of the GPU's directions against that pdf (p > Sidak-corrected 0.01);
 //  - the pdf the GPU returned with each direction equals that pdf at the direction (exactness of
 //    the estimator's division, DESIGN.md §4);
-//  - the pdf integrates to 1 (minus the BSDF's invalid mass).
+//  - the pdf integrates to 1 (minus the BSDF's invalid mass);
+//  - oracle only: the GPU's window is the CPU's chooseWindow for the exact axis, and its leaf
+//    masses are the dense product the CPU tabulates over that window (brute force).
 #include "render/direction_sampler.h"
 #include "render/gpu_path_tracer.h"
 #include "render/gpu_sampler_data.h"
+#include "render/oracle_sampler.h"
 #include "render/sampler_chi_square.h"
 #include "render/sampler_test_configs.h"
 #include "render/sampler_test_envs.h"
@@ -40,15 +43,22 @@ namespace {
 using namespace testing_configs;
 
 constexpr int kSamples = 40000;
-constexpr int kPyramid = ((1 << (2 * (kGpuMaxProductLevel + 1))) - 1) / 3; // the shader's gMass
-constexpr int kInfoFloats = 8 + kPyramid;
-const double kChiAlpha = util::sidakAlpha(0.01, 2 * kConfigs);
+// The shader's gMass: levels 0..4 (wavelet), 0..5 (oracle).
+int pyramidFloats(SamplerKind kind) {
+    const int m = kind == SamplerKind::Oracle ? kGpuOracleLevel : kGpuMaxProductLevel;
+    return ((1 << (2 * (m + 1))) - 1) / 3;
+}
+int infoFloats(SamplerKind kind) { return 8 + pyramidFloats(kind); }
+const double kChiAlpha = util::sidakAlpha(0.01, 4 * kConfigs);
 
 // Inputs per configuration: t, b, n, wo (world; w of n = BRDF type, w of wo = roughness) and the
 // base colour. Outputs per sample: (wi, pdf); per configuration (from its sample 0): weights
 // (product, bsdf, env), window (k, ox, oy, m) and the product pyramid's masses.
-const std::string kKernel = R"(#version 460
+std::string kernelSource(SamplerKind kind) {
+    const bool oracle = kind == SamplerKind::Oracle;
+    return std::string(R"(#version 460
 #extension GL_GOOGLE_include_directive : require
+)") + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 layout(local_size_x = 64) in;
 struct EnvNode { float py0, px0y0, px0y1; int firstChild; };
@@ -73,7 +83,7 @@ void main() {
     f.b = b.xyz;
     f.n = n.xyz;
     SamplerGlobals g;
-    g.kind = kSamplerWavelet;
+    g.kind = )" + (oracle ? "kSamplerOracle" : "kSamplerWavelet") + R"(;
     g.lit = pc.lit != 0u;
     g.tailOffset = pc.tailOffset;
     g.envMean = pc.envMean;
@@ -89,7 +99,7 @@ void main() {
     bool valid = dsSample(s, u1, u2, u3, wi, pdf);
     samples[i] = valid ? vec4(wi, pdf) : vec4(0.0, 0.0, 0.0, -1.0);
     if (i % pc.samplesPerConfig == 0u) {
-        uint base = c * uint()" + std::to_string(kInfoFloats) + R"();
+        uint base = c * uint()" + std::to_string(infoFloats(kind)) + R"();
         info[base] = s.cProduct;
         info[base + 1u] = s.cBsdf;
         info[base + 2u] = s.cEnv;
@@ -98,10 +108,11 @@ void main() {
         info[base + 5u] = float(s.oy);
         info[base + 6u] = float(s.m);
         info[base + 7u] = float(s.refineLevels);
-        for (int k = 0; k < )" + std::to_string(kPyramid) + R"(; ++k) info[base + 8u + uint(k)] = gMass[k];
+        for (int k = 0; k < )" + std::to_string(pyramidFloats(kind)) + R"(; ++k) info[base + 8u + uint(k)] = gMass[k];
     }
 }
 )";
+}
 
 // What the GPU built for one configuration, and the pdf it defines (dsMixturePdf's CPU form).
 struct GpuMixture {
@@ -218,18 +229,62 @@ struct GpuMixture {
     }
 };
 
-class GpuWaveletSampler : public ::testing::TestWithParam<int> {};
+// Oracle only: the GPU chose the window the CPU's chooseWindow picks for the exact axis, and its
+// leaves are the dense product (env-weighted BRDF x cos times the env's averages) the CPU
+// tabulates by brute force over that window.
+void expectOracleLeavesMatchTheCpu(const GpuMixture& mix) {
+    const SamplerEnvironment& env = *mix.env;
+    const bool lambert = std::string(mix.material->brdf->name()) == "lambert";
+    const glm::vec3 axisWorld = lambert ? mix.point.n : reflectionOf(mix.point);
+    const glm::dvec3 axis = env.toLocal(glm::normalize(glm::dvec3(axisWorld)));
+    const double cap = oracleCapHalfAngle(lambert, mix.material->params.roughness);
+    const ProductWindow window =
+        chooseWindow(env.map(), axis, cap, std::max(1, env.level() + 6 - kGpuOracleLevel));
+    EXPECT_EQ(mix.k, window.k);
+    EXPECT_EQ(mix.ox, window.ox);
+    EXPECT_EQ(mix.oy, window.oy);
+    ASSERT_EQ(mix.m, kGpuOracleLevel);
+    if (mix.k != window.k || mix.ox != window.ox || mix.oy != window.oy)
+        return;
+    auto brdfCosLocal = [&](const glm::dvec3& d) {
+        return mix.brdfCos(glm::vec3(env.toWorld(d)));
+    };
+    const wavelet::SquareGrid lobe =
+        windowTabulateEnvWeighted(env, window, kGpuOracleLevel, brdfCosLocal, 2);
+    const wavelet::SquareGrid envGrid = windowEnvGrid(env, window, kGpuOracleLevel);
+    const int side = 1 << kGpuOracleLevel, off = ((1 << (2 * kGpuOracleLevel)) - 1) / 3;
+    double cpuTotal = 0.0, largest = 0.0, worst = 0.0;
+    for (int i = 0; i < side * side; ++i) {
+        const double expected = lobe.values[size_t(i)] * envGrid.values[size_t(i)];
+        cpuTotal += expected;
+        largest = std::max(largest, expected);
+        worst = std::max(worst, std::abs(mix.mass[size_t(off + i)] - expected));
+    }
+    ASSERT_GT(cpuTotal, 0.0);
+    EXPECT_NEAR(mix.mass[0] / cpuTotal, 1.0, 1e-3);
+    EXPECT_LT(worst, 1e-3 * largest) << "largest leaf " << largest;
+}
 
-TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
+struct Case {
+    SamplerKind kind;
+    int env; // 0: studio, 1: sun
+};
+
+class GpuProductSampler : public ::testing::TestWithParam<Case> {};
+
+TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
+    const SamplerKind kind = GetParam().kind;
+    const bool studio = GetParam().env == 0;
+    const int kInfoFloats = infoFloats(kind), kPyramid = pyramidFloats(kind);
     scene::Environment envSource;
     std::vector<SamplerMaterial> materials;
     for (const Config& c : kConfigList)
         materials.push_back({c.name, plugins::findBrdf(c.brdf), {glm::vec3(0.9f, 0.8f, 0.7f), c.roughness}});
-    if (GetParam() == 0) {
-        auto studio = loadDownsampledEnvironment(
+    if (studio) {
+        auto studioEnv = loadDownsampledEnvironment(
             std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/studio.exr", 256);
-        ASSERT_TRUE(studio.ok());
-        envSource = *studio;
+        ASSERT_TRUE(studioEnv.ok());
+        envSource = *studioEnv;
         envSource.rotationDeg = 30.0f;
     } else {
         const ShadingPoint glossy = shadingPoint(kConfigList[3], 3);
@@ -237,10 +292,10 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         envSource = makeSunSkyEnvironment(256, glm::normalize(r + glm::vec3(0.0f, 0.14f, 0.0f)), 1e6);
     }
     SceneSamplerTables scene;
-    scene.tables = DirectionSamplerTables::build(envSource, materials, SamplerKind::Wavelet);
+    scene.tables = DirectionSamplerTables::build(envSource, materials, kind);
     for (int c = 0; c < kConfigs; ++c)
         scene.samplerIndexOfMaterial.push_back(c);
-    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, kConfigs);
+    auto packed = packGpuSamplers(scene, kind, kConfigs);
     ASSERT_TRUE(packed.ok()) << packed.error().message();
     const SamplerEnvironment& env = scene.tables->environment();
 
@@ -257,7 +312,7 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
     auto ctx = vk::Context::create({"", true});
     ASSERT_TRUE(ctx.ok()) << ctx.error().message();
     ASSERT_TRUE((*ctx)->hasFloat64());
-    auto spirv = vk::compileComputeShader(kKernel, "wavelet_sampler_test.comp",
+    auto spirv = vk::compileComputeShader(kernelSource(kind), "product_sampler_test.comp",
                                           {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
     ASSERT_TRUE(spirv.ok()) << spirv.error().message();
     const uint32_t total = uint32_t(kSamples * kConfigs);
@@ -308,7 +363,8 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
     EXPECT_EQ((*ctx)->validationMessageCount(), 0);
 
     for (int c = 0; c < kConfigs; ++c) {
-        SCOPED_TRACE(std::string(GetParam() == 0 ? "studio " : "sun ") + kConfigList[c].name);
+        SCOPED_TRACE(std::string(samplerKindName(kind)) + (studio ? " studio " : " sun ") +
+                     kConfigList[c].name);
         const float* f = &info[size_t(c) * kInfoFloats];
         GpuMixture mix;
         mix.cProduct = f[0];
@@ -324,6 +380,10 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         mix.material = &materials[size_t(c)];
         mix.point = shadingPoint(kConfigList[c], size_t(c));
         EXPECT_NEAR(mix.cProduct + mix.cBsdf + mix.cEnv, 1.0, 1e-6);
+        if (kind == SamplerKind::Oracle) {
+            EXPECT_GT(mix.cProduct, 0.1); // the dense product is always in the mixture
+            expectOracleLeavesMatchTheCpu(mix);
+        }
 
         // The GPU's pdf with each draw is the mixture's pdf at the draw.
         int next = 0, mismatches = 0;
@@ -335,8 +395,11 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
             if (std::abs(s[3] - expected) > 1e-3 * expected)
                 ++mismatches;
         }
-        // Float rounding of a drawn point across a texel edge (CPU tests see ~1e-7 per edge).
-        EXPECT_LE(mismatches, kSamples / 2000) << "pdf mismatches";
+        // Float rounding of a drawn point across a texel edge (CPU tests see ~1e-7 per edge): the
+        // GPU's pdf is taken at the double point it drew, this one at the float direction. The
+        // oracle's mirror leaves are 2^-13 of the square, 2^5 x smaller than the wavelet's, so
+        // more draws sit within rounding of an edge between leaves of very different mass.
+        EXPECT_LE(mismatches, kSamples / 1000) << "pdf mismatches";
 
         SphereChiSquareOptions o;
         o.samples = kSamples;
@@ -359,18 +422,22 @@ TEST_P(GpuWaveletSampler, ChiSquareAndExactPdfForEveryConfiguration) {
             << "chi2 " << result.chi.statistic << " dof " << result.chi.degreesOfFreedom;
         EXPECT_EQ(result.chi.observedOutsideSupport, 0.0);
         EXPECT_LE(result.integratedPdf, 1.0 + 1e-3);
-        std::printf("[gpu wavelet chi2] %-6s %-13s p = %.3g (dof %d, integral %.4f, shares "
+        std::printf("[gpu %s chi2] %-6s %-13s p = %.3g (dof %d, integral %.4f, shares "
                     "product %.2f bsdf %.2f env %.2f, window k=%d m=%d + %d refined, %d pdf "
                     "mismatches)\n",
-                    GetParam() == 0 ? "studio" : "sun", kConfigList[c].name, result.chi.pValue,
+                    samplerKindName(kind), studio ? "studio" : "sun", kConfigList[c].name,
+                    result.chi.pValue,
                     result.chi.degreesOfFreedom, result.integratedPdf, mix.cProduct, mix.cBsdf,
                     mix.cEnv, mix.k, mix.m, mix.refineLevels, mismatches);
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Envs, GpuWaveletSampler, ::testing::Values(0, 1),
-                         [](const ::testing::TestParamInfo<int>& i) {
-                             return std::string(i.param == 0 ? "Studio" : "Sun");
+INSTANTIATE_TEST_SUITE_P(KindsAndEnvs, GpuProductSampler,
+                         ::testing::Values(Case{SamplerKind::Wavelet, 0}, Case{SamplerKind::Wavelet, 1},
+                                           Case{SamplerKind::Oracle, 0}, Case{SamplerKind::Oracle, 1}),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                             return std::string(i.param.kind == SamplerKind::Oracle ? "Oracle" : "Wavelet") +
+                                    (i.param.env == 0 ? "Studio" : "Sun");
                          });
 
 } // namespace
