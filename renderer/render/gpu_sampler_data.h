@@ -28,7 +28,8 @@ inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense
 // (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
 inline constexpr int kGpuMaxProductLevel = 4;
 inline constexpr int kGpuTailLevel = 3;
-// The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower).
+// The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower;
+// gpu_sampler_data.cpp says why).
 inline constexpr double kGpuMinBsdfShare = 0.1;
 
 // The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the

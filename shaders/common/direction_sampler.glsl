@@ -7,7 +7,7 @@
 //   mis                     bsdf 1/2 + env 1/2
 //   wavelet                 per hit: the env factor of the reflection direction's bin (a
 //                           truncated Haar image over the bin's window, decoded to 2^m x 2^m)
-//                           times BRDF x cos at the cell centres: the product's quadtree, built
+//                           times BRDF x cos (env-weighted over 2 x 2 sub-cells): the quadtree, built
 //                           dense in private memory (2^m <= 16, the dense path of DESIGN.md §4),
 //                           refined below its leaves by the env's own quadtree (§4.1 item 1);
 //                           mixed with bsdf (defensive) and env with the CPU's share rule.
@@ -55,10 +55,9 @@ const uint kModeProduct = 1u;
 const uint kModeBsdfLobe = 2u;
 const uint kModeOracle = 3u;
 
-// The mixture's constants. The CPU's minimum env share is 0.02 since its product gained the lobe
-// refinement below the leaves; the GPU's coarser product (2^4 leaves, no lobe refinement) keeps
-// the earlier 0.05 its tests were run with (docs/wavelet-sampler.md).
-const double kMinEnvShare = 0.05LF;
+// The mixture's constants: the CPU's env share bounds (each defensive share c costs ~c in Var/I^2
+// where the lobe technique is good, docs/sampler-variance.md).
+const double kMinEnvShare = 0.02LF;
 const double kMaxEnvShare = 0.8LF;
 const int kLobeStrata = 4;
 const int kTailLevel = 3; // 8 x 8 cells (the CPU uses 16 x 16): 64 BRDF evaluations per hit
@@ -131,9 +130,80 @@ float dsSumPyramid(int m) {
     return gMass[0];
 }
 
+// The env's share of its total luminance in cell (l, x, y), by its quadtree's splits (uniform
+// below the tree's leaves); `node` is the cell's node when `exact`, else a leaf above the cell.
+double envCellMass(int l, int x, int y, out int node, out bool exact) {
+    node = 0;
+    int reached = 0;
+    double mass = 1.0LF;
+    while (reached < l && envNodes[node].firstChild >= 0) {
+        int shift = l - reached - 1;
+        int cx = (x >> shift) & 1, cy = (y >> shift) & 1;
+        EnvNode n = envNodes[node];
+        double py0, py1, px0, px1;
+        decodeSplit(n.py0, py0, py1);
+        decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, px0, px1);
+        mass *= (cy == 0 ? py0 : py1) * (cx == 0 ? px0 : px1);
+        node = n.firstChild + cx + 2 * cy;
+        ++reached;
+    }
+    exact = reached == l;
+    return mass / powerOfFour(l - reached);
+}
+
+// The probabilities of a node's four children (in (x, y) order: 0 = (0,0), 1 = (1,0),
+// 2 = (0,1), 3 = (1,1)); false, and 1/4 each, for a leaf of the tree.
+bool envChildShares(int node, out double w[4]) {
+    w[0] = 0.25LF;
+    w[1] = 0.25LF;
+    w[2] = 0.25LF;
+    w[3] = 0.25LF;
+    if (envNodes[node].firstChild < 0) return false;
+    EnvNode n = envNodes[node];
+    double py0, py1, pl0, pr0, pl1, pr1;
+    decodeSplit(n.py0, py0, py1);
+    decodeSplit(n.px0y0, pl0, pr0);
+    decodeSplit(n.px0y1, pl1, pr1);
+    w[0] = py0 * pl0;
+    w[1] = py0 * pr0;
+    w[2] = py1 * pl1;
+    w[3] = py1 * pr1;
+    return true;
+}
+
+// The env's shares of its luminance in the four sub-cells of cell (l, x, y).
+void envSubCellMasses(int l, int x, int y, out double sub[4]) {
+    int node;
+    bool exact;
+    double mass = envCellMass(l, x, y, node, exact);
+    double w[4] = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
+    if (exact) envChildShares(node, w);
+    for (int c = 0; c < 4; ++c) sub[c] = mass * w[c];
+}
+
+// BRDF x cos at the centres of the four sub-cells of global cell (l, x, y), weighted by the env's
+// luminance there: sum_s L_s f(c_s) / sum_s L_s (the plain mean where the env is black). Times
+// the env's average over the cell this is the mean of L f over the sub-cells, so a sun in the
+// steep flank of a lobe gets the BRDF where it sits, not at the cell's centre (the CPU's
+// windowTabulateEnvWeighted).
+float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y) {
+    double sub[4];
+    envSubCellMasses(l, x, y, sub);
+    double side = 1.0LF / double(1 << (l + 1));
+    double weighted = 0.0LF, weight = 0.0LF, plain = 0.0LF;
+    for (int c = 0; c < 4; ++c) {
+        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
+        double f = double(dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre)))));
+        weighted += sub[c] * f;
+        weight += sub[c];
+        plain += f;
+    }
+    return float(weight > 0.0LF ? weighted / weight : 0.25LF * plain);
+}
+
 // Decodes the env factor of `factor` (truncated Haar, SparseHaar's tree) to scaling
-// coefficients at level m (haar.h's synthesis), multiplies each cell's average by BRDF x cos at
-// the cell's centre, and sums the masses up. Returns the total mass (0: nothing to sample).
+// coefficients at level m (haar.h's synthesis), multiplies each cell's average by the
+// env-weighted BRDF x cos over its sub-cells, and sums the masses up. Returns the total mass (0: nothing to sample).
 float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
     uint table = sm.tableOffset + 5u + 4u * samplerWords[sm.tableOffset + 3u] + 2u * factor;
     uint firstNode = samplerWords[table], nodeCount = samplerWords[table + 1u];
@@ -164,16 +234,15 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
             }
     }
     // Leaves: average env luminance (2^m x the scaling coefficient), clamped at 0 (truncation
-    // leaves negatives), times BRDF x cos at the cell centre (direction in env-local frame).
+    // leaves negatives), times BRDF x cos env-weighted over the leaf's four sub-cells.
     int side = 1 << m, off = pyramidOffset(m);
-    double windowSide = 1.0LF / double(1 << s.k);
-    dvec2 origin = dvec2(s.ox, s.oy) * (0.5LF * windowSide);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
-            dvec2 p = origin + (dvec2(x, y) + 0.5LF) * (windowSide / double(side));
-            vec3 d = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
             float e = max(0.0, gMass[off + y * side + x] * float(side));
-            gMass[off + y * side + x] = e > 0.0 ? e * dsBrdfCos(s, d) : 0.0;
+            gMass[off + y * side + x] =
+                e > 0.0 ? e * dsEnvWeightedBrdfCos(s, s.k + m, (s.ox << (m - 1)) + x,
+                                                   (s.oy << (m - 1)) + y)
+                        : 0.0;
         }
     return dsSumPyramid(m);
 }
@@ -218,27 +287,6 @@ void dsChooseWindow(vec3 axis, float halfAngle, int maxK, out int k, out int ox,
     }
 }
 
-// The env's share of its total luminance in cell (l, x, y), by its quadtree's splits (uniform
-// below the tree's leaves); `node` is the cell's node when `exact`, else a leaf above the cell.
-double envCellMass(int l, int x, int y, out int node, out bool exact) {
-    node = 0;
-    int reached = 0;
-    double mass = 1.0LF;
-    while (reached < l && envNodes[node].firstChild >= 0) {
-        int shift = l - reached - 1;
-        int cx = (x >> shift) & 1, cy = (y >> shift) & 1;
-        EnvNode n = envNodes[node];
-        double py0, py1, px0, px1;
-        decodeSplit(n.py0, py0, py1);
-        decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, px0, px1);
-        mass *= (cy == 0 ? py0 : py1) * (cx == 0 ? px0 : px1);
-        node = n.firstChild + cx + 2 * cy;
-        ++reached;
-    }
-    exact = reached == l;
-    return mass / powerOfFour(l - reached);
-}
-
 // The oracle's leaves: each the mean over its 2 x 2 sub-cells of (env average there) x BRDF x cos
 // at the sub-cell's centre, i.e. the masses of the dense product one level finer (the CPU's
 // windowTabulateEnvWeighted x windowEnvGrid). Returns the total (0: nothing to sample).
@@ -251,21 +299,8 @@ float dsBuildOracleProduct(DirSampler s, float envMean) {
     double toAverage = powerOfFour(level + 1) * double(envMean);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
-            int node;
-            bool exact;
-            double mass = envCellMass(level, (s.ox << (m - 1)) + x, (s.oy << (m - 1)) + y, node, exact);
-            double sub[4] = double[4](0.25LF * mass, 0.25LF * mass, 0.25LF * mass, 0.25LF * mass);
-            if (exact && envNodes[node].firstChild >= 0) {
-                EnvNode n = envNodes[node];
-                double py0, py1, pl0, pr0, pl1, pr1;
-                decodeSplit(n.py0, py0, py1);
-                decodeSplit(n.px0y0, pl0, pr0);
-                decodeSplit(n.px0y1, pl1, pr1);
-                sub[0] = mass * py0 * pl0;
-                sub[1] = mass * py0 * pr0;
-                sub[2] = mass * py1 * pl1;
-                sub[3] = mass * py1 * pr1;
-            }
+            double sub[4];
+            envSubCellMasses(level, (s.ox << (m - 1)) + x, (s.oy << (m - 1)) + y, sub);
             float sum = 0.0;
             for (int c = 0; c < 4; ++c) {
                 if (!(sub[c] > 0.0LF)) continue;
@@ -306,21 +341,8 @@ const float kLobeFloor = 0.02;
 void dsRefineWeights(DirSampler s, int l, int x, int y, out double w[4]) {
     int reached;
     int node = envFindNode(l, x, y, reached);
-    w[0] = 1.0LF;
-    w[1] = 1.0LF;
-    w[2] = 1.0LF;
-    w[3] = 1.0LF;
-    if (reached == l && envNodes[node].firstChild >= 0) {
-        EnvNode n = envNodes[node];
-        double py0, py1, pl0, pr0, pl1, pr1;
-        decodeSplit(n.py0, py0, py1);
-        decodeSplit(n.px0y0, pl0, pr0);
-        decodeSplit(n.px0y1, pl1, pr1);
-        w[0] = py0 * pl0;
-        w[1] = py0 * pr0;
-        w[2] = py1 * pl1;
-        w[3] = py1 * pr1;
-    }
+    w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
+    if (reached == l) envChildShares(node, w);
     double side = 1.0LF / double(1 << (l + 1));
     float h[4];
     float hmax = 0.0;

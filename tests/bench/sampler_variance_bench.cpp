@@ -8,7 +8,11 @@
 // oracle ratio — our efficiency figure — and mis / wavelet), plus table build and per-point
 // construction times. docs/sampler-variance.md holds a run's output. Plain main: no timing is
 // asserted anywhere (DESIGN.md §8).
+// --gpu adds the Vulkan tracer's `wavelet` and `oracle` (built differently from the CPU's): their
+// mixtures are built on the device at the same shading point and read back (gpu_sampler_probe.h),
+// and their exact variance computed on the same dense grid. (The GPU's other kinds are twins.)
 #include "render/direction_sampler.h"
+#include "render/gpu_sampler_probe.h"
 #include "render/sampler_integrals.h"
 #include "render/sampler_test_envs.h"
 #include "util/timer.h"
@@ -19,6 +23,8 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,7 +48,31 @@ glm::vec3 rotateAboutZ(glm::vec3 v, double deg) {
             v.z};
 }
 
-void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool includeLambert) {
+// The GPU's mixtures for every material at `point`'s geometry, per GPU-specific kind.
+std::map<SamplerKind, std::vector<GpuMixture>>
+probeGpu(vk::Context* gpu, const DirectionSamplerTables& wavelet,
+         const DirectionSamplerTables& oracle, ShadingPoint point, size_t materialCount) {
+    std::map<SamplerKind, std::vector<GpuMixture>> out;
+    if (!gpu)
+        return out;
+    std::vector<ShadingPoint> points;
+    for (size_t i = 0; i < materialCount; ++i) {
+        point.material = i;
+        points.push_back(point);
+    }
+    for (const DirectionSamplerTables* t : {&wavelet, &oracle}) {
+        auto probe = probeGpuSampler(*gpu, *t, t->kind(), points, 1);
+        if (!probe) {
+            std::fprintf(stderr, "gpu probe: %s\n", probe.error().message().c_str());
+            continue;
+        }
+        out[t->kind()] = probe->mixtures;
+    }
+    return out;
+}
+
+void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool includeLambert,
+              vk::Context* gpu) {
     const glm::vec3 n(0, 1, 0), t(1, 0, 0), b(0, 0, -1);
     const float s45 = std::sqrt(0.5f);
     const glm::vec3 wo(s45, s45, 0.0f);
@@ -61,12 +91,21 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool in
     auto wavelet = DirectionSamplerTables::build(study.env, materials, SamplerKind::Wavelet);
     std::printf("\n### %s\n\nTables: %.0f ms in all.\n```\n%s```\n\n", study.name.c_str(),
                 timer.milliseconds(), wavelet->report().c_str());
+    std::shared_ptr<const DirectionSamplerTables> oracleTables;
+    std::map<SamplerKind, std::vector<GpuMixture>> gpuMixtures;
+    if (gpu) {
+        oracleTables = DirectionSamplerTables::build(study.env, materials, SamplerKind::Oracle);
+        gpuMixtures = probeGpu(gpu, *wavelet, *oracleTables, {n, t, b, wo, 0}, materials.size());
+    }
 
     std::printf("| material |");
     for (SamplerKind k : kinds)
         std::printf(" %s |", samplerKindName(k));
-    std::printf(" wavelet/oracle | mis/wavelet | bsdf/wavelet |\n|---|");
-    for (size_t i = 0; i < kinds.size() + 3; ++i)
+    std::printf(" wavelet/oracle | mis/wavelet | bsdf/wavelet |");
+    if (gpu)
+        std::printf(" gpu wavelet | gpu oracle | gpu wavelet/oracle | mis/gpu wavelet |");
+    std::printf("\n|---|");
+    for (size_t i = 0; i < kinds.size() + 3 + (gpu ? 4 : 0); ++i)
         std::printf("---|");
     std::printf("\n");
     std::vector<std::string> timings;
@@ -115,8 +154,23 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool in
             if (k == SamplerKind::Mis) vMis = rel;
             if (k == SamplerKind::Bsdf) vBsdf = rel;
         }
-        std::printf(" %.2f | %.2f | %.2f |\n", vWavelet / vOracle, vMis / vWavelet,
+        std::printf(" %.2f | %.2f | %.2f |", vWavelet / vOracle, vMis / vWavelet,
                     vBsdf / vWavelet);
+        if (gpu) {
+            double v[2] = {0.0, 0.0};
+            int slot = 0;
+            for (SamplerKind k : {SamplerKind::Wavelet, SamplerKind::Oracle}) {
+                const auto it = gpuMixtures.find(k);
+                if (it != gpuMixtures.end() && mi < it->second.size()) {
+                    const GpuMixture& mix = it->second[mi];
+                    v[slot] = integrand.moments([&](const glm::vec3& w) { return mix.pdf(w); })
+                                  .variance() / i2;
+                }
+                std::printf(" %.3g |", v[slot++]);
+            }
+            std::printf(" %.2f | %.2f |", v[0] / v[1], vMis / v[0]);
+        }
+        std::printf("\n");
         std::fflush(stdout);
         timings.push_back(timing);
     }
@@ -138,11 +192,13 @@ std::string resourceDir() {
 
 int main(int argc, char** argv) {
     std::vector<SamplerKind> kinds = allSamplerKinds();
-    bool quick = false;
+    bool quick = false, useGpu = false;
     std::string only; // --env NAME: run one study (sun, city, courtyard)
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0)
             quick = true;
+        else if (std::strcmp(argv[i], "--gpu") == 0)
+            useGpu = true;
         else if (std::strcmp(argv[i], "--env") == 0 && i + 1 < argc)
             only = argv[++i];
     }
@@ -166,7 +222,16 @@ int main(int argc, char** argv) {
         }
     std::printf("# Sampler variance study\n\nRelative per-sample variance Var/I^2 of g/p (exact, "
                 "dense grid); lower is better.\n");
+    std::unique_ptr<vk::Context> gpu;
+    if (useGpu) {
+        auto ctx = vk::Context::create({"", false});
+        if (!ctx) {
+            std::fprintf(stderr, "--gpu: %s\n", ctx.error().message().c_str());
+            return 1;
+        }
+        gpu = std::move(ctx.value());
+    }
     for (const Study& s : studies)
-        runStudy(s, kinds, true);
+        runStudy(s, kinds, true, gpu.get());
     return 0;
 }
