@@ -66,17 +66,7 @@ layout(std430, binding = 5) buffer Accumulation { vec4 accumulation[]; };
 layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
 
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-struct EnvNode {
-    float py0, px0y0, px0y1;
-    int firstChild;
-};
-struct SamplerMaterial {
-    uint mode, tableOffset, nodeOffset, scalingOffset;
-    float mixBsdf, capHalfAngle;
-    uint aroundNormal, refineMaxLevels;
-    float refineCellAngle;
-    uint pad0, pad1, pad2;
-};
+#include "common/sampler_structs.glsl"
 layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };

@@ -41,7 +41,7 @@ inline constexpr double kGpuMinBsdfShare = 0.1;
 inline constexpr int kGpuOracleLevel = 5;
 inline constexpr uint32_t kGpuOracleRefineLevels = 2;
 
-// Mirrors `struct SamplerMaterial` in path_tracer.comp (std430).
+// Mirrors `struct SamplerMaterial` in shaders/common/sampler_structs.glsl (std430).
 struct GpuSamplerMaterial {
     uint32_t mode = kGpuSamplerBsdfOnly;
     uint32_t tableOffset = 0;   // word offset of the flat header

@@ -33,8 +33,7 @@ std::string kernelSource(SamplerKind kind) {
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 )") + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
 layout(local_size_x = 64) in;
-struct EnvNode { float py0, px0y0, px0y1; int firstChild; };
-struct SamplerMaterial { uint mode, tableOffset, nodeOffset, scalingOffset; float mixBsdf, capHalfAngle; uint aroundNormal, refineMaxLevels; float refineCellAngle; uint pad0, pad1, pad2; };
+#include "common/sampler_structs.glsl"
 layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 1) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 2) readonly buffer SamplerWords { uint samplerWords[]; };

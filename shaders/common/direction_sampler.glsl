@@ -19,12 +19,9 @@
 //                           the CPU's oracle (bsdf 0.05, env share >= 0.02). Compiled with
 //                           WAVELIT_ORACLE_SAMPLER (its private pyramid is 4x the wavelet's).
 //
-// The including shader declares, before including this file:
-//   struct EnvNode { float py0, px0y0, px0y1; int firstChild; };  buffer { EnvNode envNodes[]; };
-//   struct SamplerMaterial { uint mode, tableOffset, nodeOffset, scalingOffset;
-//                            float mixBsdf, capHalfAngle; uint aroundNormal, refineMaxLevels;
-//                            float refineCellAngle; uint pad0, pad1, pad2; };
-//   buffer { SamplerMaterial samplerMaterials[]; };  buffer { uint samplerWords[]; };
+// The including shader includes common/sampler_structs.glsl and declares, before this file:
+//   buffer { EnvNode envNodes[]; };  buffer { SamplerMaterial samplerMaterials[]; };
+//   buffer { uint samplerWords[]; };
 // samplerWords holds each material's flat product tables (MaterialProductTables::flatten(), its
 // three arrays at the three offsets) and the env's 8 x 8 cell averages (float bits).
 //
@@ -188,9 +185,8 @@ void envSubCellMasses(int l, int x, int y, out double sub[4]) {
 // the env's average over the cell this is the mean of L f over the sub-cells, so a sun in the
 // steep flank of a lobe gets the BRDF where it sits, not at the cell's centre (the CPU's
 // windowTabulateEnvWeighted).
-float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y) {
-    double sub[4];
-    envSubCellMasses(l, x, y, sub);
+// `sub`: the env's shares in the sub-cells (envSubCellMasses).
+float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
     double side = 1.0LF / double(1 << (l + 1));
     double weighted = 0.0LF, weight = 0.0LF, plain = 0.0LF;
     for (int c = 0; c < 4; ++c) {
@@ -205,7 +201,8 @@ float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y) {
 
 // Decodes the env factor of `factor` (truncated Haar, SparseHaar's tree) to scaling
 // coefficients at level m (haar.h's synthesis), multiplies each cell's average by the
-// env-weighted BRDF x cos over its sub-cells, and sums the masses up. Returns the total mass (0: nothing to sample).
+// env-weighted BRDF x cos over its sub-cells, and sums the masses up. Returns the total mass (0:
+// nothing to sample).
 float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
     uint table = sm.tableOffset + 5u + 4u * samplerWords[sm.tableOffset + 3u] + 2u * factor;
     uint firstNode = samplerWords[table], nodeCount = samplerWords[table + 1u];
@@ -241,10 +238,10 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
             float e = max(0.0, gMass[off + y * side + x] * float(side));
-            gMass[off + y * side + x] =
-                e > 0.0 ? e * dsEnvWeightedBrdfCos(s, s.k + m, (s.ox << (m - 1)) + x,
-                                                   (s.oy << (m - 1)) + y)
-                        : 0.0;
+            int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
+            double sub[4];
+            if (e > 0.0) envSubCellMasses(s.k + m, gx, gy, sub);
+            gMass[off + y * side + x] = e > 0.0 ? e * dsEnvWeightedBrdfCos(s, s.k + m, gx, gy, sub) : 0.0;
         }
     return dsSumPyramid(m);
 }
@@ -289,28 +286,22 @@ void dsChooseWindow(vec3 axis, float halfAngle, int maxK, out int k, out int ox,
     }
 }
 
-// The oracle's leaves: each the mean over its 2 x 2 sub-cells of (env average there) x BRDF x cos
-// at the sub-cell's centre, i.e. the masses of the dense product one level finer (the CPU's
-// windowTabulateEnvWeighted x windowEnvGrid). Returns the total (0: nothing to sample).
+// The oracle's leaves: the leaf's exact env average times its env-weighted BRDF x cos, i.e. the
+// mean over its 2 x 2 sub-cells of (env average there) x BRDF x cos at the sub-cell's centre: the
+// masses of the dense product one level finer (the CPU's windowTabulateEnvWeighted x
+// windowEnvGrid). Returns the total (0: nothing to sample).
 float dsBuildOracleProduct(DirSampler s, float envMean) {
     int m = s.m, side = 1 << m, off = pyramidOffset(m);
     int level = s.k + m;
-    double windowSide = 1.0LF / double(1 << s.k);
-    dvec2 origin = dvec2(s.ox, s.oy) * (0.5LF * windowSide);
-    double subSide = windowSide / double(2 * side);
-    double toAverage = powerOfFour(level + 1) * double(envMean);
+    double toAverage = powerOfFour(level) * double(envMean);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
+            int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
             double sub[4];
-            envSubCellMasses(level, (s.ox << (m - 1)) + x, (s.oy << (m - 1)) + y, sub);
-            float sum = 0.0;
-            for (int c = 0; c < 4; ++c) {
-                if (!(sub[c] > 0.0LF)) continue;
-                dvec2 p = origin + (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * subSide;
-                vec3 d = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
-                sum += float(sub[c] * toAverage) * dsBrdfCos(s, d);
-            }
-            gMass[off + y * side + x] = 0.25 * sum;
+            envSubCellMasses(level, gx, gy, sub);
+            double mass = sub[0] + sub[1] + sub[2] + sub[3];
+            gMass[off + y * side + x] =
+                mass > 0.0LF ? float(mass * toAverage) * dsEnvWeightedBrdfCos(s, level, gx, gy, sub) : 0.0;
         }
     return dsSumPyramid(m);
 }

@@ -1,7 +1,6 @@
 // The environment's sampling quadtree on the GPU: twin of wavelet::HierarchicalSampler's descent
 // over its float tables (renderer/wavelet/hierarchical_sampler.cpp; 16 bytes per node, see
-// TableNode there). The including shader declares
-//     struct EnvNode { float py0, px0y0, px0y1; int firstChild; };
+// TableNode there). The including shader declares (EnvNode: common/sampler_structs.glsl)
 //     buffer ... { EnvNode envNodes[]; };
 // Points and the numbers u are DOUBLE: a descent through 10+ levels rescales u by each choice's
 // probability (a sun's texel takes 1e-6 of a split), and float would run out of digits, so the
