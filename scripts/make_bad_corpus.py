@@ -174,6 +174,10 @@ def main():
     files["broken_lighting_ref.wlscene"] = js(scene(lighting="bad_light_type.wllight"))
     files["camera_looks_at_itself.wlscene"] = js(scene(camera={"position": [1, 2, 3], "target": [1, 2, 3]}))
     files["nan_mesh_in_scene.wlscene"] = js(scene(objects=[{"id": 1, "name": "o", "mesh": "nan_vertex.obj", "material": 1}]))
+    files["unknown_brdf.wlscene"] = js(scene(materials=[{"id": 1, "name": "m", "brdf": "lambert"},
+                                                        {"id": 2, "name": "ground", "brdf": "no_such_brdf"}],
+                                             objects=[{"id": 1, "name": "o", "mesh": QUAD, "material": 2}]))
+    files["typo_key.wlscene"] = js(scene(materials=[{"id": 1, "name": "m", "brdf": "ggx", "roughnes": 0.3}]))
 
     # --- lighting setups ---
     files["bad_light_type.wllight"] = js(lighting(lights=[{"id": 1, "name": "l", "type": "laser"}]))

@@ -1,11 +1,12 @@
 // `wavelit-cli validate FILE` (DESIGN.md §6): loads a scene, lighting setup, mesh or image the way
 // the renderer would. Exit 1 with the first problem when the file cannot be used; exit 0 with a
-// one-line summary when it can. What loading would sanitise (NaN/Inf/negative texels replaced by
-// 0, zero-area triangles skipped, unknown keys ignored) is printed as "warning:" lines on stderr
-// and fails validation with exit 1: the renderer and editor load such files after the named repair,
-// but a validator that passed them would let a file that does not mean what it says into a
-// pipeline (a NaN texel renders as black, a misspelt key silently takes its default).
-// docs/file-formats.md lists every warning.
+// one-line summary when it can. Unknown keys and unknown BRDFs are load errors (scene_io.h), so
+// validate, `render` and the editor refuse the same files with the same message. What loading
+// would sanitise (NaN/Inf/negative texels replaced by 0, zero-area triangles skipped) is printed as
+// "warning:" lines on stderr and fails validation with exit 1: the renderer and editor load such
+// files after the named repair, but a validator that passed them would let a file that does not
+// mean what it says into a pipeline (a NaN texel renders as black). docs/file-formats.md lists
+// every warning.
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "scene/image_io.h"

@@ -1,5 +1,6 @@
 #include "scene/property_json.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -129,11 +130,73 @@ Json valueToJson(const PropertyValue& value) {
     return std::visit(Visitor{}, value);
 }
 
+namespace {
+
+// Edit distance counting an insertion, deletion, substitution or swap of neighbours as one edit
+// (optimal string alignment), ASCII case folded: "nmae" is one edit from "name", "basecolor" from
+// "baseColor".
+size_t editDistance(const std::string& a, const std::string& b) {
+    auto same = [](char x, char y) {
+        auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+        return lower(x) == lower(y);
+    };
+    const size_t n = a.size(), m = b.size();
+    std::vector<std::vector<size_t>> d(n + 1, std::vector<size_t>(m + 1));
+    for (size_t i = 0; i <= n; ++i) d[i][0] = i;
+    for (size_t j = 0; j <= m; ++j) d[0][j] = j;
+    for (size_t i = 1; i <= n; ++i)
+        for (size_t j = 1; j <= m; ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (same(a[i - 1], b[j - 1]) ? 0 : 1)});
+            if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]))
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[n][m];
+}
+
+} // namespace
+
+std::string unknownKeyProblem(const std::string& key, const JsonPlace& at, const std::vector<std::string>& known) {
+    std::string line = "unknown key '" + key + "' in " + (at.where.empty() ? "/" : at.where);
+    // Close enough to be a typo: at most a third of the key's letters (1 to 3 edits).
+    const size_t limit = std::clamp<size_t>(key.size() / 3, 1, 3);
+    const std::string* best = nullptr;
+    size_t bestDistance = limit + 1;
+    for (const std::string& k : known)
+        if (const size_t d = editDistance(key, k); d < bestDistance) {
+            best = &k;
+            bestDistance = d;
+        }
+    if (best) line += " (did you mean '" + *best + "'?)";
+    return line;
+}
+
+util::Status readExtras(const Json& value, const JsonPlace& at, std::string* extras) {
+    if (!value.is_object())
+        return jsonError(ErrorKind::Format, at, std::string("extras: expected an object, got ") + jsonTypeName(value));
+    *extras = value.dump();
+    return util::okStatus();
+}
+
+void writeExtras(Json& obj, const std::string& extras) {
+    if (!extras.empty()) obj["extras"] = Json::parse(extras);
+}
+
 util::Status readProperties(const Json& obj, EntityKind kind, void* entity, const JsonPlace& at,
-                            const std::set<std::string>& structural, std::vector<std::string>* warnings) {
+                            const std::set<std::string>& structural, std::string* extras,
+                            std::vector<std::string>& problems) {
     if (!obj.is_object())
         return jsonError(ErrorKind::Format, at,
                          std::string("expected a ") + entityKindName(kind) + " object, got " + jsonTypeName(obj));
+    // Unknown keys first: a misspelt required key then shows its suggestion next to the error.
+    std::vector<std::string> known;
+    for (const PropertyInfo& info : properties(kind)) known.push_back(info.name);
+    known.insert(known.end(), structural.begin(), structural.end());
+    known.push_back("extras");
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+        if (std::find(known.begin(), known.end(), it.key()) == known.end())
+            problems.push_back(unknownKeyProblem(it.key(), at, known));
+    if (auto it = obj.find("extras"); it != obj.end())
+        if (auto s = readExtras(*it, at.child("extras"), extras); !s) return s;
     for (const PropertyInfo& info : properties(kind)) {
         auto it = obj.find(info.name);
         if (it == obj.end()) {
@@ -142,14 +205,21 @@ util::Status readProperties(const Json& obj, EntityKind kind, void* entity, cons
                                  std::string(entityKindName(kind)) + " is missing required key '" + info.name + "'");
             continue;
         }
+        // An option of a named kind that no one registered (a BRDF no plugin provides): listed
+        // with the entity's name, and the entity keeps its default (the load fails anyway).
+        if (info.type == PropertyType::Enum && !info.enumNoun.empty() && it->is_string() &&
+            std::find(info.enumOptions.begin(), info.enumOptions.end(), it->get<std::string>()) == info.enumOptions.end()) {
+            const auto name = obj.find("name");
+            const std::string who = std::string(entityKindName(kind)) +
+                                    (name != obj.end() && name->is_string() ? " '" + name->get<std::string>() + "'" : "");
+            problems.push_back(who + " (" + at.child(info.name).where + "): " +
+                               unknownOptionMessage(info, it->get<std::string>()));
+            continue;
+        }
         auto value = valueFromJson(*it, info, at.child(info.name));
         if (!value) return value.error();
         info.set(entity, *value);
     }
-    for (auto it = obj.begin(); it != obj.end(); ++it)
-        if (!findProperty(kind, it.key()) && !structural.count(it.key()) && warnings)
-            warnings->push_back(at.file + ":" + (at.where.empty() ? "/" : at.where) + ": unknown key '" +
-                                it.key() + "' ignored");
     return util::okStatus();
 }
 

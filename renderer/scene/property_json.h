@@ -33,10 +33,23 @@ util::Result<PropertyValue> valueFromJson(const Json& value, const PropertyInfo&
 Json valueToJson(const PropertyValue& value);
 
 // Reads the registry properties of `kind` from object `obj` into `entity`. Keys listed in
-// `structural` (ids, nested sections) are the caller's; any other unknown key is reported as a
-// warning, so typos surface. Missing optional keys keep the entity's current value.
+// `structural` (ids, nested sections) are the caller's. "extras" (an object) is stored as JSON text
+// in *extras. Problems the file's author must fix but that do not stop the reading — an unknown
+// key (with the closest known key when one is close), an option of a named kind the registry does
+// not have (an unknown BRDF) — are appended to `problems`, one line each, so a load can list them
+// all; any other bad value is returned as the error. Missing optional keys keep the entity's value.
 util::Status readProperties(const Json& obj, EntityKind kind, void* entity, const JsonPlace& at,
-                            const std::set<std::string>& structural, std::vector<std::string>* warnings);
+                            const std::set<std::string>& structural, std::string* extras,
+                            std::vector<std::string>& problems);
+
+// Reads an "extras" value (which must be an object) as compact JSON text.
+util::Status readExtras(const Json& value, const JsonPlace& at, std::string* extras);
+// Writes `extras` back under "extras" when it is not empty.
+void writeExtras(Json& obj, const std::string& extras);
+
+// "unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)": the closest of `known` by
+// edit distance is suggested when it is close enough to be a typo.
+std::string unknownKeyProblem(const std::string& key, const JsonPlace& at, const std::vector<std::string>& known);
 
 // Writes the applicable registry properties of `entity` into `obj` in declaration order.
 void writeProperties(Json& obj, EntityKind kind, const void* entity);

@@ -3,6 +3,8 @@
 // material m -> its BRDF factor, camera -> all BRDF factors toward the view).
 #include "scene/property_registry.h"
 
+#include "plugins/brdf.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -25,6 +27,7 @@ struct Decl {
     Decl& tip(const char* t) { p.tooltip = t; return *this; }
     Decl& cost(ChangeKind c, FactorKind f) { p.change = c; p.factor = f; return *this; }
     Decl& options(std::vector<std::string> o) { p.enumOptions = std::move(o); return *this; }
+    Decl& noun(const char* n) { p.enumNoun = n; return *this; }
     Decl& lights(std::vector<LightType> t) { p.lightTypes = std::move(t); return *this; }
     Decl& required() { p.required = true; return *this; }
 };
@@ -87,8 +90,13 @@ std::vector<PropertyInfo> declareMaterial() {
     const auto K = EntityKind::Material;
     field(l, K, "name", "Name", PropertyType::String, &Material::name)
         .tip("Unique among materials").cost(ChangeKind::Display, FactorKind::None);
-    field(l, K, "brdf", "BRDF", PropertyType::String, &Material::brdf)
-        .required().tip("BRDF plugin name (plugins/): lambert, ggx, ...")
+    // The options are the plugin registry's names, so a file, a script or the panel's combo box
+    // can only name a BRDF the renderer has.
+    const std::vector<std::string> brdfs = plugins::brdfNames();
+    std::string brdfTip = "BRDF plugin (plugins/):";
+    for (const std::string& b : brdfs) brdfTip += " " + b;
+    field(l, K, "brdf", "BRDF", PropertyType::Enum, &Material::brdf)
+        .options(brdfs).noun("BRDF").required().tip(brdfTip.c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "baseColor", "Base colour", PropertyType::Color, &Material::baseColor).range(0.0, 1.0)
         .tip("Diffuse albedo (lambert) or normal-incidence reflectance F0 (ggx)")
@@ -312,11 +320,8 @@ util::Status checkValue(const PropertyInfo& info, const PropertyValue& value) {
     }
     case PropertyType::Enum: {
         const auto& s = std::get<std::string>(value);
-        if (std::find(info.enumOptions.begin(), info.enumOptions.end(), s) == info.enumOptions.end()) {
-            std::string all;
-            for (const auto& o : info.enumOptions) all += (all.empty() ? "" : ", ") + o;
-            return fail("'" + s + "' is not one of " + all);
-        }
+        if (std::find(info.enumOptions.begin(), info.enumOptions.end(), s) == info.enumOptions.end())
+            return fail(unknownOptionMessage(info, s));
         break;
     }
     case PropertyType::Path:
@@ -327,6 +332,13 @@ util::Status checkValue(const PropertyInfo& info, const PropertyValue& value) {
     default: break;
     }
     return util::okStatus();
+}
+
+std::string unknownOptionMessage(const PropertyInfo& info, const std::string& value) {
+    std::string all;
+    for (const auto& o : info.enumOptions) all += (all.empty() ? "" : ", ") + o;
+    if (info.enumNoun.empty()) return "'" + value + "' is not one of " + all;
+    return "unknown " + info.enumNoun + " '" + value + "'; known: " + all;
 }
 
 const void* findEntity(const Scene& scene, EntityRef ref) {

@@ -60,6 +60,7 @@ struct PropertyInfo {
     ChangeKind change = ChangeKind::Restart;
     FactorKind factor = FactorKind::None;
     std::vector<std::string> enumOptions;  // Enum: the allowed strings
+    std::string enumNoun; // Enum: what an option names, for messages ("BRDF"); empty: a plain choice
     std::vector<LightType> lightTypes;     // Light properties: the types it applies to (empty: all)
     EntityKind refersTo = EntityKind::Material; // IdRef: the kind it names
     bool required = false; // a file must state it (no sensible default: mesh, material, type)
@@ -78,6 +79,10 @@ bool propertyApplies(const PropertyInfo& info, const void* entity);
 
 // Type, range, enum option and path checks. The error's reason names the property.
 util::Status checkValue(const PropertyInfo& info, const PropertyValue& value);
+
+// Why `value` is not an option of Enum `info`, without the property name: "unknown BRDF 'phong';
+// known: lambert, ggx" when the property has an enumNoun, else "'laser' is not one of point, ...".
+std::string unknownOptionMessage(const PropertyInfo& info, const std::string& value);
 
 // Absolute paths and home-relative paths are rejected: files must stay movable (DESIGN.md §6).
 bool isPortableRelativePath(const std::string& path);

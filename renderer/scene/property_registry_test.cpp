@@ -1,5 +1,7 @@
 #include "scene/property_registry.h"
 
+#include "plugins/brdf.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -93,6 +95,23 @@ TEST(PropertyRegistry, GenericGetSetByName) {
     EXPECT_FLOAT_EQ(s.camera.verticalFovDeg, 55.0f);
     EXPECT_EQ(getProperty(s, {EntityKind::Light, 8}, "type").error().reason, "light 8 not found");
     EXPECT_EQ(setProperty(s, {EntityKind::Camera}, "zoom", 1.0f).error().reason, "camera has no property 'zoom'");
+}
+
+// A material's BRDF is one of the plugin registry's names: the panel offers them in a combo box,
+// and setProperty (scripts, undo) refuses any other with a message listing them.
+TEST(PropertyRegistry, BrdfIsAChoiceOfThePluginRegistry) {
+    const PropertyInfo& brdf = *findProperty(EntityKind::Material, "brdf");
+    EXPECT_EQ(brdf.type, PropertyType::Enum);
+    EXPECT_EQ(brdf.enumOptions, plugins::brdfNames());
+    Scene s;
+    s.materials.push_back(Material{.id = 3, .name = "gold"});
+    ASSERT_TRUE(setProperty(s, {EntityKind::Material, 3}, "brdf", std::string("ggx")).ok());
+    EXPECT_EQ(s.materials[0].brdf, "ggx");
+    const auto refused = setProperty(s, {EntityKind::Material, 3}, "brdf", std::string("no_such_brdf"));
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().reason, "brdf: unknown BRDF 'no_such_brdf'; known: lambert, ggx");
+    EXPECT_EQ(s.materials[0].brdf, "ggx");
+    for (const std::string& name : plugins::brdfNames()) EXPECT_TRUE(checkValue(brdf, name).ok()) << name;
 }
 
 TEST(PropertyRegistry, LightPropertiesApplyByType) {

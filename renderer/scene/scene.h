@@ -6,6 +6,10 @@
 // Ids are stable for the lifetime of an entity (saved in files) and unique per kind (materials,
 // objects and lights each; EntityRef and Invalidation carry the kind); names are unique per kind.
 // New entities take nextId(), which is unique across all kinds.
+//
+// `extras` (on the document roots and on every entity): the JSON text of the object a file stores
+// under "extras" — data of other tools that Wavelit keeps and never reads. Loading stores it as
+// compact JSON, saving writes it back unchanged; empty when the file has none (docs/file-formats.md).
 #pragma once
 
 #include "util/image.h"
@@ -31,6 +35,7 @@ struct Camera {
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float verticalFovDeg = 40.0f;
     float exposureEv = 0.0f; // display only: never resets accumulation
+    std::string extras{};
 };
 
 // A triangle mesh in object space, as loaded through Assimp. Normals are per vertex (may be
@@ -43,7 +48,8 @@ struct TriangleMesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
-// A material: a BRDF plugin by name (plugins/) and its parameters.
+// A material: a BRDF plugin by name (plugins/) and its parameters. The name must be one of
+// plugins::brdfNames() (the registry's "brdf" property checks it; loading refuses any other).
 // Built-in plugins: "lambert" (baseColor), "ggx" (baseColor = F0 tint, roughness r, alpha = r^2).
 struct Material {
     EntityId id = kInvalidId;
@@ -52,6 +58,7 @@ struct Material {
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};
     float roughness = 0.5f; // in [0, 1]; GGX alpha = roughness^2 (DESIGN.md §3)
     glm::vec3 emission{0.0f}; // emitted radiance, W/(m^2 sr)
+    std::string extras{};
 };
 
 // Object transform: translation, then Euler XYZ rotation in degrees, then scale (T * R * S).
@@ -69,6 +76,7 @@ struct Object {
     std::shared_ptr<const TriangleMesh> mesh;
     Transform transform;
     EntityId materialId = kInvalidId;
+    std::string extras{};
 };
 
 // HDR environment: equirectangular map (DESIGN.md §3 mapping), yaw rotation about +Y in degrees.
@@ -80,6 +88,7 @@ struct Environment {
     float rotationDeg = 0.0f;
     float intensity = 1.0f;
     glm::vec3 tint{1.0f};
+    std::string extras{};
 };
 
 enum class LightType { Point, Sphere, Rect, Spot, Sun };
@@ -101,6 +110,7 @@ struct Light {
     float coneInnerDeg = 20.0f;              // Spot full-intensity half angle
     float coneOuterDeg = 30.0f;              // Spot cut-off half angle
     float angularDiameterDeg = 0.53f;        // Sun
+    std::string extras{};
 };
 
 // A lighting setup (*.wllight): loadable onto any scene.
@@ -108,12 +118,14 @@ struct LightingSetup {
     std::string name;
     Environment environment;
     std::vector<Light> lights;
+    std::string extras{}; // the *.wllight root's (or an inline "lighting" object's) extras
 };
 
 struct RenderDefaults {
     int width = 512;
     int height = 512;
     int bounces = 4;
+    std::string extras{};
 };
 
 struct Scene {
@@ -124,6 +136,7 @@ struct Scene {
     LightingSetup lighting;
     std::string lightingPath; // non-empty when the lighting setup lives in its own *.wllight
     RenderDefaults render;
+    std::string extras{}; // the *.wlscene root's extras
 
     const Material* findMaterial(EntityId id) const;
     const Object* findObject(EntityId id) const;

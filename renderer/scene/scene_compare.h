@@ -1,5 +1,5 @@
 // Model equality through the registry: every property of every entity, plus the structure the
-// registry does not describe (ids, entity order, scene/lighting names, lighting reference).
+// registry does not describe (ids, entity order, scene/lighting names, lighting reference, extras).
 // Loaded assets (meshes, images) are not compared: they follow from the paths. Used by round-trip
 // and undo tests, and by anything that needs to know whether an edit changed the document.
 #pragma once

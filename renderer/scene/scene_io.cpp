@@ -1,6 +1,10 @@
 // *.wlscene / *.wllight reading and writing. Every property goes through the registry
 // (property_json.h); this file only knows the document's sections, ids and file references.
 //
+// Problems the author must fix but that do not stop the reading (unknown keys, unknown BRDFs:
+// property_json.h) are collected per file; a file with any fails to load with one error that names
+// the file and lists them all, one per line, so the editor, `render` and `validate` show the same.
+//
 // Lighting references: a scene's "lighting" is either an inline setup or a path to a *.wllight,
 // or to another *.wlscene whose lighting is borrowed (so a shot can share a look with another);
 // such chains are followed with cycle detection. The loaded setup's environment path is always
@@ -15,6 +19,7 @@
 #include "scene/scene_validation.h"
 #include "util/path_util.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -28,9 +33,50 @@ using util::makeError;
 
 namespace {
 
-const std::set<std::string> kSceneKeys = {"format", "version", "name", "camera", "render",
-                                          "materials", "objects", "lighting"};
-const std::set<std::string> kLightingKeys = {"format", "version", "name", "environment", "lights"};
+const std::vector<std::string> kSceneKeys = {"format", "version", "name", "camera", "render",
+                                             "materials", "objects", "lighting", "extras"};
+const std::vector<std::string> kLightingKeys = {"format", "version", "name", "environment", "lights", "extras"};
+// An inline "lighting" object: a *.wllight body without format and version.
+const std::vector<std::string> kInlineLightingKeys = {"name", "environment", "lights", "extras"};
+
+// The collected problems of `file` (and `hard`, the error that stopped the reading, if any) as one
+// error: "f.wlscene: <problem>" for one, "f.wlscene: N problems:\n  <problem>\n  ..." for more.
+util::Error problemsError(const std::string& file, std::vector<std::string> problems,
+                          const util::Error* hard) {
+    if (hard) problems.push_back(hard->file == file ? util::Error{hard->kind, "", hard->where, hard->reason}.message()
+                                                    : hard->message());
+    std::string reason;
+    if (problems.size() == 1) {
+        reason = problems[0];
+    } else {
+        reason = std::to_string(problems.size()) + " problems:";
+        for (const std::string& p : problems) reason += "\n  " + p;
+    }
+    return makeError(ErrorKind::Invalid, file, reason);
+}
+
+// Runs `read` (which appends problems to the vector it is given) for the document `file`; when it
+// collected any, the result is problemsError.
+template <typename T, typename Read>
+util::Result<T> collectProblems(const std::string& file, Read&& read) {
+    std::vector<std::string> problems;
+    util::Result<T> result = read(problems);
+    if (problems.empty()) return result;
+    return problemsError(file, std::move(problems), result ? nullptr : &result.error());
+}
+
+// Unknown keys of a document root or inline lighting object (entities: readProperties).
+void checkKeys(const Json& obj, const std::vector<std::string>& known, const JsonPlace& at,
+               std::vector<std::string>& problems) {
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+        if (std::find(known.begin(), known.end(), it.key()) == known.end())
+            problems.push_back(unknownKeyProblem(it.key(), at, known));
+}
+
+util::Status readRootExtras(const Json& obj, const JsonPlace& at, std::string* extras) {
+    auto it = obj.find("extras");
+    return it == obj.end() ? util::okStatus() : readExtras(*it, at.child("extras"), extras);
+}
 
 util::Result<Json> readJsonFile(const std::string& path) {
     std::error_code ec;
@@ -71,7 +117,7 @@ util::Result<std::string> readName(const Json& doc, const JsonPlace& at) {
 // Reads an array of entities with ids; a missing id is assigned after the largest one in use.
 template <typename E>
 util::Status readEntities(const Json& doc, const std::string& key, EntityKind kind, std::vector<E>& out,
-                          const JsonPlace& at, std::vector<std::string>* warnings) {
+                          const JsonPlace& at, std::vector<std::string>& problems) {
     auto it = doc.find(key);
     if (it == doc.end()) return util::okStatus();
     if (!it->is_array()) return jsonError(ErrorKind::Format, at.child(key), key + ": expected an array, got " + jsonTypeName(*it));
@@ -80,7 +126,7 @@ util::Status readEntities(const Json& doc, const std::string& key, EntityKind ki
         const Json& item = (*it)[i];
         const JsonPlace here = at.child(key).child(i);
         E entity;
-        if (auto s = readProperties(item, kind, &entity, here, {"id"}, warnings); !s) return s;
+        if (auto s = readProperties(item, kind, &entity, here, {"id"}, &entity.extras, problems); !s) return s;
         if (auto id = item.find("id"); id != item.end()) {
             if (!id->is_number_unsigned() || id->get<uint64_t>() == kInvalidId)
                 return jsonError(ErrorKind::Format, here.child("id"), std::string("id: expected a positive integer, got ") + jsonTypeName(*id));
@@ -98,19 +144,22 @@ util::Status readEntities(const Json& doc, const std::string& key, EntityKind ki
 
 // The body of a lighting setup: a *.wllight document or a scene's inline "lighting" object.
 util::Result<LightingSetup> readLightingBody(const Json& obj, const JsonPlace& at, bool topLevel,
-                                             std::vector<std::string>* warnings) {
+                                             std::vector<std::string>& problems) {
     if (!obj.is_object()) return jsonError(ErrorKind::Format, at, std::string("lighting: expected an object, got ") + jsonTypeName(obj));
     LightingSetup lighting;
     auto name = readName(obj, at);
     if (!name) return name.error();
     lighting.name = *name;
+    checkKeys(obj, topLevel ? kLightingKeys : kInlineLightingKeys, at, problems);
+    if (auto s = readRootExtras(obj, at, &lighting.extras); !s) return s.error();
     if (auto env = obj.find("environment"); env != obj.end())
-        if (auto s = readProperties(*env, EntityKind::Environment, &lighting.environment, at.child("environment"), {}, warnings); !s)
+        if (auto s = readProperties(*env, EntityKind::Environment, &lighting.environment, at.child("environment"), {},
+                                    &lighting.environment.extras, problems);
+            !s)
             return s.error();
-    if (auto s = readEntities(obj, "lights", EntityKind::Light, lighting.lights, at, warnings); !s) return s.error();
-    for (auto it = obj.begin(); it != obj.end(); ++it)
-        if (!kLightingKeys.count(it.key()) || (!topLevel && (it.key() == "format" || it.key() == "version")))
-            if (warnings) warnings->push_back(at.file + ":" + (at.where.empty() ? "/" : at.where) + ": unknown key '" + it.key() + "' ignored");
+    if (auto s = readEntities(obj, "lights", EntityKind::Light, lighting.lights, at, problems); !s) return s.error();
+    // Checks of the whole setup wait for a clean read: a typo'd key might be their cause.
+    if (!problems.empty()) return lighting;
     if (auto s = validateLighting(lighting, at.file, at.where); !s) return s.error();
     return lighting;
 }
@@ -120,15 +169,18 @@ Json writeLightingBody(const LightingSetup& lighting) {
     out["name"] = lighting.name;
     Json env = Json::object();
     writeProperties(env, EntityKind::Environment, &lighting.environment);
+    writeExtras(env, lighting.environment.extras);
     out["environment"] = env;
     Json lights = Json::array();
     for (const Light& l : lighting.lights) {
         Json j = Json::object();
         j["id"] = l.id;
         writeProperties(j, EntityKind::Light, &l);
+        writeExtras(j, l.extras);
         lights.push_back(j);
     }
     out["lights"] = lights;
+    writeExtras(out, lighting.extras);
     return out;
 }
 
@@ -136,7 +188,7 @@ Json writeLightingBody(const LightingSetup& lighting) {
 // `file`'s folder. `chain` holds the files already on the way here (cycle detection), starting
 // with the scene being loaded, `rootFile` as the user named it.
 util::Result<LightingSetup> lightingFromFile(const fs::path& file, std::vector<fs::path> chain,
-                                             const std::string& rootFile, std::vector<std::string>* warnings) {
+                                             const std::string& rootFile) {
     const fs::path key = fs::weakly_canonical(file);
     for (const fs::path& seen : chain)
         if (seen == key) {
@@ -150,18 +202,23 @@ util::Result<LightingSetup> lightingFromFile(const fs::path& file, std::vector<f
     const std::string ext = lowerExtension(file);
     if (ext == ".wllight") {
         if (auto s = checkAndMigrate(*doc, "wavelit-lighting", kLightingFormatVersion, file.string()); !s) return s.error();
-        return readLightingBody(*doc, {file.string(), ""}, true, warnings);
+        return collectProblems<LightingSetup>(file.string(), [&](std::vector<std::string>& problems) {
+            return readLightingBody(*doc, {file.string(), ""}, true, problems);
+        });
     }
     if (ext != ".wlscene") return makeError(ErrorKind::Unsupported, file.string(), "a lighting reference must name a .wllight or .wlscene file");
     if (auto s = checkAndMigrate(*doc, "wavelit-scene", kSceneFormatVersion, file.string()); !s) return s.error();
     auto ref = doc->find("lighting");
     if (ref == doc->end()) return LightingSetup{};
-    if (!ref->is_string()) return readLightingBody(*ref, {file.string(), "/lighting"}, false, warnings);
+    if (!ref->is_string())
+        return collectProblems<LightingSetup>(file.string(), [&](std::vector<std::string>& problems) {
+            return readLightingBody(*ref, {file.string(), "/lighting"}, false, problems);
+        });
     const std::string target = ref->get<std::string>();
     if (!isPortableRelativePath(target))
         return makeError(ErrorKind::Invalid, file.string(), "absolute path '" + target + "' not allowed: paths are relative to the file", "/lighting");
     const fs::path next = folderOf(file.string()) / target;
-    auto lighting = lightingFromFile(next, chain, rootFile, warnings);
+    auto lighting = lightingFromFile(next, chain, rootFile);
     if (!lighting) return lighting;
     std::string& env = lighting->environment.path;
     if (!env.empty())
@@ -220,35 +277,44 @@ util::Result<Scene> loadScene(const std::string& path, LoadReport* report) {
     auto doc = readJsonFile(path);
     if (!doc) return doc.error();
     if (auto s = checkAndMigrate(*doc, "wavelit-scene", kSceneFormatVersion, path); !s) return s.error();
-    std::vector<std::string>* warnings = report ? &report->warnings : nullptr;
-    const JsonPlace root{path, ""};
-    Scene scene;
-    auto name = readName(*doc, root);
-    if (!name) return name.error();
-    scene.name = *name;
-    if (auto it = doc->find("camera"); it != doc->end())
-        if (auto s = readProperties(*it, EntityKind::Camera, &scene.camera, root.child("camera"), {}, warnings); !s) return s.error();
-    if (auto it = doc->find("render"); it != doc->end())
-        if (auto s = readProperties(*it, EntityKind::Render, &scene.render, root.child("render"), {}, warnings); !s) return s.error();
-    if (auto s = readEntities(*doc, "materials", EntityKind::Material, scene.materials, root, warnings); !s) return s.error();
-    if (auto s = readEntities(*doc, "objects", EntityKind::Object, scene.objects, root, warnings); !s) return s.error();
-    if (auto it = doc->find("lighting"); it != doc->end()) {
-        if (it->is_string()) {
-            scene.lightingPath = it->get<std::string>();
-            if (!isPortableRelativePath(scene.lightingPath))
-                return makeError(ErrorKind::Invalid, path, "absolute path '" + scene.lightingPath + "' not allowed: paths are relative to the file", "/lighting");
-            auto lighting = lightingFromFile(folderOf(path) / scene.lightingPath, {fs::weakly_canonical(path)}, path, warnings);
-            if (!lighting) return fromScene(lighting.error(), path, "/lighting");
-            scene.lighting = std::move(lighting).value();
-        } else {
-            auto lighting = readLightingBody(*it, root.child("lighting"), false, warnings);
-            if (!lighting) return lighting.error();
-            scene.lighting = std::move(lighting).value();
+    auto read = collectProblems<Scene>(path, [&](std::vector<std::string>& problems) -> util::Result<Scene> {
+        const JsonPlace root{path, ""};
+        Scene scene;
+        checkKeys(*doc, kSceneKeys, root, problems);
+        if (auto s = readRootExtras(*doc, root, &scene.extras); !s) return s.error();
+        auto name = readName(*doc, root);
+        if (!name) return name.error();
+        scene.name = *name;
+        if (auto it = doc->find("camera"); it != doc->end())
+            if (auto s = readProperties(*it, EntityKind::Camera, &scene.camera, root.child("camera"), {},
+                                        &scene.camera.extras, problems);
+                !s)
+                return s.error();
+        if (auto it = doc->find("render"); it != doc->end())
+            if (auto s = readProperties(*it, EntityKind::Render, &scene.render, root.child("render"), {},
+                                        &scene.render.extras, problems);
+                !s)
+                return s.error();
+        if (auto s = readEntities(*doc, "materials", EntityKind::Material, scene.materials, root, problems); !s) return s.error();
+        if (auto s = readEntities(*doc, "objects", EntityKind::Object, scene.objects, root, problems); !s) return s.error();
+        if (auto it = doc->find("lighting"); it != doc->end()) {
+            if (it->is_string()) {
+                scene.lightingPath = it->get<std::string>();
+                if (!isPortableRelativePath(scene.lightingPath))
+                    return makeError(ErrorKind::Invalid, path, "absolute path '" + scene.lightingPath + "' not allowed: paths are relative to the file", "/lighting");
+                auto lighting = lightingFromFile(folderOf(path) / scene.lightingPath, {fs::weakly_canonical(path)}, path);
+                if (!lighting) return fromScene(lighting.error(), path, "/lighting");
+                scene.lighting = std::move(lighting).value();
+            } else {
+                auto lighting = readLightingBody(*it, root.child("lighting"), false, problems);
+                if (!lighting) return lighting.error();
+                scene.lighting = std::move(lighting).value();
+            }
         }
-    }
-    for (auto it = doc->begin(); it != doc->end(); ++it)
-        if (!kSceneKeys.count(it.key()) && warnings)
-            warnings->push_back(path + ":/: unknown key '" + it.key() + "' ignored");
+        return scene;
+    });
+    if (!read) return read.error();
+    Scene scene = std::move(read).value();
     if (auto s = validateScene(scene, path); !s) return s.error();
     if (auto s = loadAssets(scene, path, report); !s) return fromScene(s.error(), path, "/lighting");
     return scene;
@@ -258,7 +324,9 @@ util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadRepor
     auto doc = readJsonFile(path);
     if (!doc) return doc.error();
     if (auto s = checkAndMigrate(*doc, "wavelit-lighting", kLightingFormatVersion, path); !s) return s.error();
-    auto lighting = readLightingBody(*doc, {path, ""}, true, report ? &report->warnings : nullptr);
+    auto lighting = collectProblems<LightingSetup>(path, [&](std::vector<std::string>& problems) {
+        return readLightingBody(*doc, {path, ""}, true, problems);
+    });
     if (!lighting) return lighting;
     if (auto s = loadEnvironment(lighting->environment, folderOf(path), path, "/environment/map", report); !s) return s.error();
     return lighting;
@@ -269,9 +337,12 @@ util::Status saveScene(const Scene& scene, const std::string& path) {
     doc["format"] = "wavelit-scene";
     doc["version"] = kSceneFormatVersion;
     doc["name"] = scene.name;
+    writeExtras(doc, scene.extras);
     Json camera = Json::object(), render = Json::object();
     writeProperties(camera, EntityKind::Camera, &scene.camera);
     writeProperties(render, EntityKind::Render, &scene.render);
+    writeExtras(camera, scene.camera.extras);
+    writeExtras(render, scene.render.extras);
     doc["camera"] = camera;
     doc["render"] = render;
     Json materials = Json::array(), objects = Json::array();
@@ -279,12 +350,14 @@ util::Status saveScene(const Scene& scene, const std::string& path) {
         Json j = Json::object();
         j["id"] = m.id;
         writeProperties(j, EntityKind::Material, &m);
+        writeExtras(j, m.extras);
         materials.push_back(j);
     }
     for (const Object& o : scene.objects) {
         Json j = Json::object();
         j["id"] = o.id;
         writeProperties(j, EntityKind::Object, &o);
+        writeExtras(j, o.extras);
         objects.push_back(j);
     }
     doc["materials"] = materials;

@@ -15,10 +15,21 @@ namespace wavelit::scene {
 inline constexpr int kSceneFormatVersion = 1;
 inline constexpr int kLightingFormatVersion = 1;
 
+// Repairs that loading made (NaN/Inf/negative texels replaced or clamped, zero-area triangles
+// skipped): the file loads, and the callers show these (`validate` fails on them).
 struct LoadReport {
-    std::vector<std::string> warnings; // recoverable problems (sanitised texels, unknown keys)
+    std::vector<std::string> warnings;
 };
 
+// A file that does not mean what it says fails to load. Unknown keys (with a "did you mean" when a
+// known key is close) and materials naming a BRDF that no plugin provides (plugins::brdfNames())
+// are all collected, and the error names the file and lists them, one per line:
+//   "a.wlscene: unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)"           (one)
+//   "a.wlscene: 2 problems:\n  unknown key ...\n  material 'ground' (/materials/1/brdf): unknown
+//    BRDF 'phong'; known: lambert, ggx"                                                       (more)
+// A problem in a referenced *.wllight is reported from the scene: "a.wlscene:/lighting: l.wllight: ...".
+// Any other bad value stops the reading at once with its own error (after the collected ones, if
+// any). Keys under "extras" are kept in the model's `extras` and written back by the savers.
 util::Result<Scene> loadScene(const std::string& path, LoadReport* report = nullptr);
 util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadReport* report = nullptr);
 

@@ -2,6 +2,9 @@
 
 #include "scene/change_set.h"
 #include "scene/scene_compare.h"
+#include "plugins/brdf.h"
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -248,15 +251,134 @@ TEST(SceneIo, BorrowedLightingKeepsItsEnvironmentPathValid) {
     EXPECT_TRUE(s->lighting.environment.image);
 }
 
-TEST(SceneIo, UnknownKeysAreWarnings) {
+// "lambert, ggx": the plugin registry's names, as the messages list them.
+std::string knownBrdfs() {
+    std::string all;
+    for (const std::string& n : plugins::brdfNames()) all += (all.empty() ? "" : ", ") + n;
+    return all;
+}
+
+TEST(SceneIo, UnknownKeyFailsTheLoadWithASuggestion) {
     TempDir tmp;
     writeText(tmp.path / "mesh.obj", kTriangleObj);
-    writeText(tmp.path / "typo.wlscene", sceneText(", \"roughnes\": 0.3"));
+    writeText(tmp.path / "typo.wlscene", R"({"format": "wavelit-scene", "version": 1,
+      "materials": [{"id": 1, "name": "m", "brdf": "ggx", "roughnes": 0.3}],
+      "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 1}]})");
     LoadReport report;
     auto s = loadScene((tmp.path / "typo.wlscene").string(), &report);
-    ASSERT_TRUE(s.ok()) << s.error().message();
-    ASSERT_EQ(report.warnings.size(), 1u);
-    EXPECT_NE(report.warnings[0].find("/objects/0: unknown key 'roughnes'"), std::string::npos) << report.warnings[0];
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().message(), (tmp.path / "typo.wlscene").string() +
+                                       ": unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)");
+    EXPECT_TRUE(report.warnings.empty());
+    // Far from every known key: no suggestion.
+    writeText(tmp.path / "far.wlscene", R"({"format": "wavelit-scene", "version": 1, "shininess": 3})");
+    s = loadScene((tmp.path / "far.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().reason, "unknown key 'shininess' in /");
+}
+
+TEST(SceneIo, UnknownBrdfNamesTheMaterialAndTheKnownOnes) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    writeText(tmp.path / "phong.wlscene", R"({"format": "wavelit-scene", "version": 1,
+      "materials": [{"id": 1, "name": "m", "brdf": "lambert"}, {"id": 2, "name": "ground", "brdf": "no_such_brdf"}],
+      "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 2}]})");
+    auto s = loadScene((tmp.path / "phong.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().reason,
+              "material 'ground' (/materials/1/brdf): unknown BRDF 'no_such_brdf'; known: " + knownBrdfs());
+    EXPECT_EQ(knownBrdfs(), "lambert, ggx");
+}
+
+// Every unknown key and BRDF of a file is listed, one per line, then the error that stopped the
+// reading; problems in a referenced setup are reported from the scene, naming both files.
+TEST(SceneIo, EveryProblemOfAFileIsListed) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    const fs::path path = tmp.path / "many.wlscene";
+    writeText(path, R"({"format": "wavelit-scene", "version": 1, "nmae": "x",
+      "camera": {"fovy": 30},
+      "materials": [{"id": 1, "name": "a", "brdf": "phong", "baseColour": [1, 0, 0]}],
+      "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 1}],
+      "lighting": {"environment": {"intensity": 1},
+                   "lights": [{"id": 1, "type": "point", "intensty": 5, "color": "red"}]}})");
+    auto s = loadScene(path.string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().file, path.string());
+    EXPECT_EQ(s.error().reason, "6 problems:\n"
+                                "  unknown key 'nmae' in / (did you mean 'name'?)\n"
+                                "  unknown key 'fovy' in /camera (did you mean 'fov'?)\n"
+                                "  unknown key 'baseColour' in /materials/0 (did you mean 'baseColor'?)\n"
+                                "  material 'a' (/materials/0/brdf): unknown BRDF 'phong'; known: " + knownBrdfs() + "\n"
+                                "  unknown key 'intensty' in /lighting/lights/0 (did you mean 'intensity'?)\n"
+                                "  /lighting/lights/0/color: color: expected an array of 3 numbers, got a string");
+
+    writeText(tmp.path / "l.wllight", R"({"format": "wavelit-lighting", "version": 1, "enviroment": {},
+      "lights": [{"id": 1, "type": "point", "radius2": 1}]})");
+    auto l = loadLightingSetup((tmp.path / "l.wllight").string());
+    ASSERT_FALSE(l.ok());
+    EXPECT_EQ(l.error().reason, "2 problems:\n"
+                                "  unknown key 'enviroment' in / (did you mean 'environment'?)\n"
+                                "  unknown key 'radius2' in /lights/0 (did you mean 'radius'?)");
+    writeText(tmp.path / "ref.wlscene", R"({"format": "wavelit-scene", "version": 1, "lighting": "l.wllight"})");
+    s = loadScene((tmp.path / "ref.wlscene").string());
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().where, "/lighting");
+    EXPECT_EQ(s.error().reason, l.error().message());
+}
+
+// "extras" on the roots and on every entity is kept as it is and written back; it is never a problem.
+TEST(SceneIo, ExtrasRoundTripUnchanged) {
+    TempDir tmp;
+    writeText(tmp.path / "mesh.obj", kTriangleObj);
+    const std::string text = R"({"format": "wavelit-scene", "version": 1, "name": "x",
+      "extras": {"dcc": {"tool": "blender", "version": [4, 2]}, "note": "übersicht", "n": 1e-7, "big": 12345678901234},
+      "camera": {"fov": 35, "extras": {"rig": "crane"}},
+      "render": {"extras": {"farm": null}},
+      "materials": [{"id": 1, "name": "m", "brdf": "ggx", "extras": {"substance": {"graph": "gold.sbsar", "seed": 7}}}],
+      "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 1, "extras": {"tags": ["hero", true, 0.5]}}],
+      "lighting": {"extras": {"look": "dusk"}, "environment": {"intensity": 2, "extras": {}},
+                   "lights": [{"id": 1, "type": "point", "extras": {"gobo": "leaves.png", "z": -0.0}}]}})";
+    writeText(tmp.path / "a.wlscene", text);
+    LoadReport report;
+    auto a = loadScene((tmp.path / "a.wlscene").string(), &report);
+    ASSERT_TRUE(a.ok()) << a.error().message();
+    EXPECT_TRUE(report.warnings.empty());
+    EXPECT_EQ(a->materials[0].extras, R"({"substance":{"graph":"gold.sbsar","seed":7}})");
+    EXPECT_EQ(a->lighting.environment.extras, "{}");
+    ASSERT_TRUE(saveScene(*a, (tmp.path / "b.wlscene").string()).ok());
+    auto b = loadScene((tmp.path / "b.wlscene").string());
+    ASSERT_TRUE(b.ok()) << b.error().message();
+    EXPECT_EQ(firstDifference(*a, *b), "");
+    // Every "extras" object of the saved file equals the original's, value for value.
+    const auto original = nlohmann::json::parse(text), saved = nlohmann::json::parse(readBytes(tmp.path / "b.wlscene"));
+    for (const char* at : {"/extras", "/camera/extras", "/render/extras", "/materials/0/extras", "/objects/0/extras",
+                           "/lighting/extras", "/lighting/environment/extras", "/lighting/lights/0/extras"}) {
+        const nlohmann::json::json_pointer ptr(at);
+        ASSERT_TRUE(saved.contains(ptr)) << at;
+        EXPECT_EQ(saved.at(ptr), original.at(ptr)) << at;
+    }
+    // No extras, no key: files without them save as before.
+    a->materials[0].extras.clear();
+    ASSERT_TRUE(saveScene(*a, (tmp.path / "c.wlscene").string()).ok());
+    EXPECT_FALSE(nlohmann::json::parse(readBytes(tmp.path / "c.wlscene"))["materials"][0].contains("extras"));
+
+    // A *.wllight keeps its own.
+    writeText(tmp.path / "l.wllight", R"({"format": "wavelit-lighting", "version": 1, "extras": {"by": "me"},
+      "lights": [{"id": 3, "type": "sun", "extras": {"k": [1, 2]}}]})");
+    auto l = loadLightingSetup((tmp.path / "l.wllight").string());
+    ASSERT_TRUE(l.ok()) << l.error().message();
+    ASSERT_TRUE(saveLightingSetup(*l, (tmp.path / "l2.wllight").string()).ok());
+    const auto light = nlohmann::json::parse(readBytes(tmp.path / "l2.wllight"));
+    EXPECT_EQ(light["extras"], nlohmann::json::parse(R"({"by": "me"})"));
+    EXPECT_EQ(light["lights"][0]["extras"], nlohmann::json::parse(R"({"k": [1, 2]})"));
+
+    // Extras must be an object.
+    writeText(tmp.path / "bad.wlscene", R"({"format": "wavelit-scene", "version": 1, "camera": {"extras": 3}})");
+    auto bad = loadScene((tmp.path / "bad.wlscene").string());
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().where, "/camera/extras");
+    EXPECT_EQ(bad.error().reason, "extras: expected an object, got a number");
 }
 
 TEST(SceneIo, MissingMeshNamesSceneObjectAndMesh) {
