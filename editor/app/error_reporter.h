@@ -19,6 +19,9 @@ public:
     explicit ErrorReporter(QWidget* dialogParent);
 
     void report(const QString& title, const QString& message);
+    // Something the user should read that is not a failure (a file opened with repairs): a
+    // warning dialog, logged; not counted as an error and not emitted as `reported`.
+    void warn(const QString& title, const QString& message);
 
     QString lastMessage() const { return m_lastMessage; }
     int count() const { return m_count; }
@@ -26,11 +29,15 @@ public:
     QMessageBox* currentDialog() const { return m_dialog; }
     // Scripts and headless runs log errors instead of showing dialogs.
     void setDialogsEnabled(bool enabled) { m_dialogsEnabled = enabled; }
+    bool dialogsEnabled() const { return m_dialogsEnabled; }
 
 signals:
     void reported(const QString& message);
 
 private:
+    void show(QMessageBox::Icon icon, const QString& objectName, const QString& title,
+              const QString& message);
+
     QWidget* m_parent;
     QPointer<QMessageBox> m_dialog;
     QString m_lastMessage;

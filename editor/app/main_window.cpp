@@ -3,12 +3,14 @@
 #include "app/editor_actions.h"
 #include "app/error_reporter.h"
 #include "app/scene_document.h"
+#include "app/unsaved_changes_prompt.h"
 #include "panels/outline_panel.h"
 #include "panels/property_panel.h"
 #include "panels/render_status_label.h"
 #include "viewport/camera_orbit_handler.h"
 #include "viewport/viewport_widget.h"
 
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QStatusBar>
@@ -31,10 +33,10 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     : QMainWindow(parent), m_document(new SceneDocument(this)), m_errors(new ErrorReporter(this)),
       m_render(new RenderController(renderSettings, this)), m_viewport(new ViewportWidget(this)),
       m_outline(new OutlinePanel(this)), m_properties(new PropertyPanel(this)),
-      m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document)),
+      m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document, m_errors)),
       m_cameraHandler(new CameraOrbitHandler(this)) {
     setObjectName("mainWindow");
-    setWindowTitle(tr("Wavelit"));
+    updateTitle();
     setCentralWidget(m_viewport);
     addDock(this, tr("Scene"), "outlineDock", m_outline, Qt::LeftDockWidgetArea);
     addDock(this, tr("Properties"), "propertyDock", m_properties, Qt::RightDockWidgetArea);
@@ -49,10 +51,30 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
 // the widgets it signals still exist.
 MainWindow::~MainWindow() { delete m_render; }
 
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (m_closeApproved || !m_document->isModified()) {
+        m_render->cancel(); // no new pass starts; the destructor joins the render thread
+        event->accept();
+        return;
+    }
+    event->ignore();
+    m_actions->prompt()->ask(tr("close"), [this] {
+        m_closeApproved = true;
+        // Queued: this may run inside the close event being refused right now.
+        QMetaObject::invokeMethod(this, &QWidget::close, Qt::QueuedConnection);
+    });
+}
+
+void MainWindow::updateTitle() {
+    const QString path = m_document->path();
+    setWindowTitle(path.isEmpty() ? tr("Wavelit[*]") : tr("%1[*] — Wavelit").arg(QFileInfo(path).fileName()));
+    setWindowModified(m_document->isModified());
+}
+
 void MainWindow::wireDocument() {
     connect(m_document, &SceneDocument::sceneOpened, this,
             [this](std::shared_ptr<const scene::Scene> scene, const QString& path) {
-                setWindowTitle(tr("%1 — Wavelit").arg(QFileInfo(path).fileName()));
+                updateTitle();
                 m_outline->setScene(*scene);
                 refreshProperties();
                 m_viewport->clear();
@@ -80,8 +102,11 @@ void MainWindow::wireDocument() {
             [this](const QString& message) { m_errors->report(tr("Edit"), message); });
     connect(m_document, &SceneDocument::saved, this, [this](const QString& path) {
         statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
-        setWindowTitle(tr("%1 — Wavelit").arg(QFileInfo(path).fileName()));
+        updateTitle();
     });
+    connect(m_document, &SceneDocument::modifiedChanged, this, [this] { updateTitle(); });
+    connect(m_document, &SceneDocument::openRepaired, this,
+            [this](const QString& message) { m_errors->warn(tr("Open scene"), message); });
     connect(m_outline, &OutlinePanel::entitySelected, this, [this] { refreshProperties(); });
     connect(m_properties, &PropertyPanel::editRequested, this, [this](const PropertyEdit& edit) {
         if (auto status = m_document->apply(edit); !status) {
@@ -109,9 +134,10 @@ void MainWindow::wireViewportHandlers() {
     };
     connect(m_document, &SceneDocument::sceneOpened, m_cameraHandler, follow);
     connect(m_document, &SceneDocument::sceneEdited, m_cameraHandler, follow);
-    connect(m_cameraHandler, &CameraOrbitHandler::cameraMoved, this, [this](const glm::vec3& p) {
+    connect(m_cameraHandler, &CameraOrbitHandler::cameraMoved, this,
+            [this](const glm::vec3& p, GestureId gesture) {
         const EntityRef camera{EntityKind::Camera, scene::kInvalidId};
-        if (auto status = m_document->apply({camera, "position", p}); !status)
+        if (auto status = m_document->apply({camera, "position", p, gesture}); !status)
             m_errors->report(tr("Camera"), QString::fromStdString(status.error().message()));
     });
 }

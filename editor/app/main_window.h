@@ -1,6 +1,7 @@
 // MainWindow: assembles the docks (outline, properties), the viewport and the status bar, and
 // wires signals between them, the document and the render controller. Behaviour lives in those
-// parts (STYLE.md §3: the window does no work of its own).
+// parts (STYLE.md §3: the window does no work of its own). The title carries the document's name
+// and a modified marker; closing with unsaved changes asks first (app/unsaved_changes_prompt.h).
 #pragma once
 
 #include "viewport/render_controller.h"
@@ -33,8 +34,12 @@ public:
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
 
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
 private:
     void wireDocument();
+    void updateTitle();
     void wireRendering();
     void wireViewportHandlers();
     void refreshProperties();
@@ -48,6 +53,7 @@ private:
     RenderStatusLabel* m_status;
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;
+    bool m_closeApproved = false;
 };
 
 } // namespace wavelit::editor

@@ -1,11 +1,12 @@
 #include "app/scene_document.h"
 
 #include "commands/property_command.h"
+#include "panels/entity_ref.h"
 
+#include "scene/scene_compare.h"
 #include "scene/scene_io.h"
 
 #include <QDir>
-#include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
 namespace wavelit::editor {
@@ -14,6 +15,7 @@ struct SceneDocument::LoadResult {
     QString path;
     std::shared_ptr<const scene::Scene> scene; // null on failure
     QString error;
+    QStringList repairs; // the loader's warnings
 };
 
 namespace {
@@ -24,35 +26,35 @@ QString describeFailure(const QString& action, const QString& path, const util::
         .arg(action, QDir::toNativeSeparators(path), QString::fromStdString(error.message()));
 }
 
-// A relative path written in a file at `fromDir`, re-expressed for a file at `toDir`.
-std::string rebasePath(const std::string& path, const QDir& fromDir, const QDir& toDir) {
-    if (path.empty() || QDir::isAbsolutePath(QString::fromStdString(path))) return path;
-    const QString absolute = QDir::cleanPath(fromDir.absoluteFilePath(QString::fromStdString(path)));
-    return toDir.relativeFilePath(absolute).toStdString();
-}
-
-// Paths in a scene are relative to its file (DESIGN.md §6), and saveScene writes them as they are:
-// saving into another folder must re-express them for the new file. An environment inside a
-// separate *.wllight stays relative to that file, which does not move.
-std::shared_ptr<const scene::Scene> rebasedForSave(const scene::Scene& scene, const QString& from,
-                                                   const QString& to) {
-    const QDir fromDir = QFileInfo(from).absoluteDir();
-    const QDir toDir = QFileInfo(to).absoluteDir();
-    auto out = std::make_shared<scene::Scene>(scene);
-    if (from.isEmpty() || fromDir == toDir) return out;
-    for (auto& object : out->objects) object.meshPath = rebasePath(object.meshPath, fromDir, toDir);
-    if (out->lightingPath.empty())
-        out->lighting.environment.path = rebasePath(out->lighting.environment.path, fromDir, toDir);
-    else
-        out->lightingPath = rebasePath(out->lightingPath, fromDir, toDir);
-    return out;
+// "sun intensity", "camera position": the Edit menu's "Undo ..." text.
+QString stepName(const scene::Scene& scene, const PropertyEdit& edit) {
+    const scene::PropertyInfo* info = scene::findProperty(edit.entity.kind, edit.name);
+    std::string entity = entityName(scene, edit.entity);
+    if (entity == "Camera" || entity == "Environment" || entity == "Render")
+        entity = scene::entityKindName(edit.entity.kind);
+    return QStringLiteral("%1 %2").arg(QString::fromStdString(entity),
+                                       QString::fromStdString(info ? info->label : edit.name).toLower());
 }
 
 } // namespace
 
-SceneDocument::SceneDocument(QObject* parent) : QObject(parent), m_undo(new QUndoStack(this)) {}
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent), m_undo(new QUndoStack(this)) {
+    m_undo->setUndoLimit(kUndoLimit);
+    connect(m_undo, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+}
 
 SceneDocument::~SceneDocument() = default;
+
+bool SceneDocument::isModified() const { return m_scene && !m_undo->isClean(); }
+
+bool SceneDocument::lightingEdited() const {
+    return m_scene && !m_scene->lightingPath.empty() &&
+           !scene::firstDifference(m_scene->lighting, m_savedLighting).empty();
+}
+
+LightingSave SceneDocument::defaultLightingSave() const {
+    return lightingEdited() ? LightingSave::Copy : LightingSave::Reference;
+}
 
 void SceneDocument::open(const QString& path) {
     if (m_loading) {
@@ -64,11 +66,13 @@ void SceneDocument::open(const QString& path) {
     m_loading->setFuture(QtConcurrent::run([path] {
         auto result = std::make_shared<LoadResult>();
         result->path = path;
-        auto loaded = scene::loadScene(path.toStdString());
+        scene::LoadReport report;
+        auto loaded = scene::loadScene(path.toStdString(), &report);
         if (loaded)
             result->scene = std::make_shared<const scene::Scene>(std::move(loaded.value()));
         else
             result->error = describeFailure("open scene", path, loaded.error());
+        for (const auto& warning : report.warnings) result->repairs << QString::fromStdString(warning);
         return result;
     }));
 }
@@ -79,31 +83,62 @@ void SceneDocument::onLoaded() {
     watcher->deleteLater();
     std::shared_ptr<LoadResult> result = watcher->result();
     if (!result->scene) {
-        emit openFailed(result->error);
+        emit openFailed(result->error); // the open document stays as it is
         return;
     }
     setScene(result->scene, result->path);
+    if (!result->repairs.isEmpty())
+        emit openRepaired(QStringLiteral("'%1' opened with repairs:\n%2")
+                              .arg(QDir::toNativeSeparators(result->path), result->repairs.join('\n')));
 }
 
 void SceneDocument::setScene(std::shared_ptr<const scene::Scene> scene, const QString& path) {
     m_undo->clear();
     m_scene = std::move(scene);
+    m_savedLighting = m_scene ? m_scene->lighting : scene::LightingSetup{};
     m_path = path;
     emit sceneOpened(m_scene, m_path);
+    emit modifiedChanged(isModified());
 }
 
-void SceneDocument::saveAs(const QString& path) {
+void SceneDocument::save() {
+    if (m_path.isEmpty()) {
+        emit saveFailed(tr("The scene has no file yet: use Save As."));
+        return;
+    }
+    saveAs(m_path, lightingEdited() ? LightingSave::SaveSetup : LightingSave::Reference);
+}
+
+void SceneDocument::saveAs(const QString& path, std::optional<LightingSave> choice) {
     if (!m_scene || m_saving) {
         emit saveFailed(m_scene ? tr("A save is already in progress.") : tr("No scene to save."));
         return;
     }
-    m_savingPath = path;
-    m_savingScene = rebasedForSave(*m_scene, m_path, path);
+    auto plan = planSave(*m_scene, m_path.toStdString(), path.toStdString(),
+                         choice.value_or(defaultLightingSave()), lightingEdited());
+    if (!plan) {
+        emit saveFailed(describeFailure("save scene to", path, plan.error()));
+        return;
+    }
+    startSave(std::move(plan.value()));
+}
+
+void SceneDocument::startSave(SavePlan plan) {
+    m_savingPlan = plan;
+    m_savingUndoIndex = m_undo->index();
     m_saving = new QFutureWatcher<QString>(this);
     connect(m_saving, &QFutureWatcherBase::finished, this, &SceneDocument::onSaved);
-    m_saving->setFuture(QtConcurrent::run([path, scene = m_savingScene] {
-        auto status = scene::saveScene(*scene, path.toStdString());
-        return status ? QString() : describeFailure("save scene to", path, status.error());
+    m_saving->setFuture(QtConcurrent::run([plan = std::move(plan)] {
+        // The setup first: if it fails, the scene file still refers to the intact old setup.
+        if (plan.lighting) {
+            auto status = scene::saveLightingSetup(*plan.lighting, plan.lightingFile);
+            if (!status)
+                return describeFailure("save lighting setup to", QString::fromStdString(plan.lightingFile),
+                                       status.error());
+        }
+        auto status = scene::saveScene(*plan.scene, plan.scenePath);
+        return status ? QString()
+                      : describeFailure("save scene to", QString::fromStdString(plan.scenePath), status.error());
     }));
 }
 
@@ -111,27 +146,28 @@ void SceneDocument::onSaved() {
     auto* watcher = m_saving;
     m_saving = nullptr;
     watcher->deleteLater();
+    const SavePlan plan = std::move(*m_savingPlan);
+    m_savingPlan.reset();
     const QString error = watcher->result();
     if (!error.isEmpty()) {
-        m_savingScene.reset();
         emit saveFailed(error);
         return;
     }
     // The document now lives at the new path; its paths are relative to it. Edits made while the
     // save ran are kept (only the path fields of the saved snapshot are taken over).
-    if (m_scene != m_savingScene) {
-        auto current = std::make_shared<scene::Scene>(*m_scene);
-        current->lightingPath = m_savingScene->lightingPath;
-        if (current->lightingPath.empty())
-            current->lighting.environment.path = m_savingScene->lighting.environment.path;
-        for (size_t i = 0; i < current->objects.size() && i < m_savingScene->objects.size(); ++i)
-            if (current->objects[i].id == m_savingScene->objects[i].id)
-                current->objects[i].meshPath = m_savingScene->objects[i].meshPath;
-        m_scene = std::move(current);
-    }
-    m_savingScene.reset();
-    m_path = m_savingPath;
+    auto current = std::make_shared<scene::Scene>(*m_scene);
+    current->lightingPath = plan.scene->lightingPath;
+    current->lighting.environment.path = plan.scene->lighting.environment.path;
+    for (size_t i = 0; i < current->objects.size() && i < plan.scene->objects.size(); ++i)
+        if (current->objects[i].id == plan.scene->objects[i].id)
+            current->objects[i].meshPath = plan.scene->objects[i].meshPath;
+    m_scene = std::move(current);
+    if (plan.lighting) m_savedLighting = *plan.lighting;
+    else if (m_scene->lightingPath.empty()) m_savedLighting = m_scene->lighting;
+    m_path = QString::fromStdString(plan.scenePath);
+    if (m_undo->index() == m_savingUndoIndex) m_undo->setClean();
     emit saved(m_path);
+    emit modifiedChanged(isModified());
 }
 
 util::Status SceneDocument::apply(const PropertyEdit& edit) {
@@ -139,7 +175,8 @@ util::Status SceneDocument::apply(const PropertyEdit& edit) {
     auto applied = applyEdit(*m_scene, edit);
     if (!applied) return applied.error();
     m_undo->push(new PropertyCommand(edit, applied->previous,
-                                     [this](const PropertyEdit& e) { commit(e); }));
+                                     [this](const PropertyEdit& e) { commit(e); },
+                                     stepName(*m_scene, edit)));
     return util::okStatus();
 }
 

@@ -1,9 +1,20 @@
-// SceneDocument: the open scene and its file. Holds an immutable snapshot
+// SceneDocument: the open scene and its files. Holds an immutable snapshot
 // (shared_ptr<const Scene>) that the panels read and the render thread copies; every edit makes
 // a new snapshot. Loading and saving run on a pool thread (the UI thread never waits on disk);
 // results come back as signals, errors with a message that names the file.
+//
+// The document is the scene file plus, when the scene refers to a lighting setup (*.wllight),
+// that setup: editing its lights or environment marks the document modified like any other edit.
+// Save writes the scene and, if its lighting was edited, the setup it refers to; Save As lets the
+// caller choose where edited referenced lighting goes (app/save_plan.h), a copy beside the new
+// scene by default. Each file is written atomically (temp, fsync, rename), the setup first: a
+// failure leaves the scene file untouched and is reported.
+//
+// Undo: one step per user edit (edits of one gesture merge, commands/property_command.h), at most
+// kUndoLimit steps, oldest dropped first (each step holds two property values, ~100 bytes).
 #pragma once
 
+#include "app/save_plan.h"
 #include "commands/property_edit.h"
 
 #include <QFutureWatcher>
@@ -12,12 +23,15 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 
 namespace wavelit::editor {
 
 class SceneDocument : public QObject {
     Q_OBJECT
 public:
+    static constexpr int kUndoLimit = 1000;
+
     explicit SceneDocument(QObject* parent = nullptr);
     ~SceneDocument() override;
 
@@ -25,10 +39,19 @@ public:
     QString path() const { return m_path; }
     bool isLoading() const { return m_loading != nullptr; }
     bool isSaving() const { return m_saving != nullptr; }
+    // Unsaved edits (of the scene or of the lighting setup it refers to).
+    bool isModified() const;
+    // The referenced lighting setup differs from its file (false for inline lighting).
+    bool lightingEdited() const;
+    // Save As's default: Copy for edited referenced lighting, else keep the reference.
+    LightingSave defaultLightingSave() const;
 
     // Asynchronous. A newer open() supersedes one still loading.
     void open(const QString& path);
-    void saveAs(const QString& path);
+    // Save: the scene to path() and, if edited, its referenced setup to its own file.
+    void save();
+    // Save As: the scene to `path`; referenced lighting as `choice` (default: defaultLightingSave()).
+    void saveAs(const QString& path, std::optional<LightingSave> choice = std::nullopt);
     // Replaces the document synchronously (tests, scripts that build scenes).
     void setScene(std::shared_ptr<const scene::Scene> scene, const QString& path);
 
@@ -42,6 +65,8 @@ public:
 signals:
     void sceneOpened(std::shared_ptr<const wavelit::scene::Scene> scene, const QString& path);
     void openFailed(const QString& message);
+    // The scene opened, but the loader repaired problems on the way (each line names one).
+    void openRepaired(const QString& message);
     // A Restart/Rebuild edit: the render thread needs the new scene.
     void sceneEdited(std::shared_ptr<const wavelit::scene::Scene> scene);
     // A Display edit: re-tone-map only.
@@ -49,20 +74,24 @@ signals:
     void saved(const QString& path);
     void saveFailed(const QString& message);
     void editFailed(const QString& message);
+    void modifiedChanged(bool modified);
 
 private:
     struct LoadResult;
     void onLoaded();
     void onSaved();
     void commit(const PropertyEdit& edit); // applies without undo bookkeeping (commands call it)
+    void startSave(SavePlan plan);
 
     std::shared_ptr<const scene::Scene> m_scene;
     QString m_path;
+    // The referenced setup as its file holds it (what lightingEdited() compares with).
+    scene::LightingSetup m_savedLighting;
     QUndoStack* m_undo;
     QFutureWatcher<std::shared_ptr<LoadResult>>* m_loading = nullptr;
     QFutureWatcher<QString>* m_saving = nullptr; // empty string = success
-    QString m_savingPath;
-    std::shared_ptr<const scene::Scene> m_savingScene; // with paths relative to m_savingPath
+    std::optional<SavePlan> m_savingPlan;
+    int m_savingUndoIndex = 0; // the undo index the saved snapshot corresponds to
 };
 
 } // namespace wavelit::editor

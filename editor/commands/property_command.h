@@ -1,7 +1,8 @@
 // PropertyCommand: one property edit on the undo stack. It holds the new and the previous value
 // and applies them through a callback (the document's commit), so commands know nothing of the
-// document or the render thread. Consecutive edits of the same property merge (a camera drag or
-// repeated exposure steps undo in one step).
+// document or the render thread. Edits of one gesture (same property, same non-zero GestureId: a
+// slider drag, a spin-box scrub, a viewport drag) merge into one step; separate edits never do.
+// The command's text names the step for the Edit menu ("sun intensity" -> "Undo sun intensity").
 #pragma once
 
 #include "commands/property_edit.h"
@@ -17,7 +18,9 @@ public:
     using Commit = std::function<void(const PropertyEdit&)>;
     static constexpr int kId = 0x5750; // "WP": QUndoStack merges only commands of one id
 
-    PropertyCommand(PropertyEdit edit, scene::PropertyValue previous, Commit commit);
+    // `text`: what the Edit menu calls the step; empty: "<kind> <property>".
+    PropertyCommand(PropertyEdit edit, scene::PropertyValue previous, Commit commit,
+                    const QString& text = {});
 
     void redo() override;
     void undo() override;

@@ -1,6 +1,13 @@
 #include "commands/property_edit.h"
 
+#include <atomic>
+
 namespace wavelit::editor {
+
+GestureId newGestureId() {
+    static std::atomic<GestureId> next{1};
+    return next.fetch_add(1);
+}
 
 util::Result<AppliedEdit> applyEdit(const scene::Scene& scene, const PropertyEdit& edit) {
     const scene::PropertyInfo* info = scene::findProperty(edit.entity.kind, edit.name);

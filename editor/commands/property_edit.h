@@ -15,10 +15,18 @@
 
 namespace wavelit::editor {
 
+// A gesture is one continuous user action that sends many values: a slider drag, a spin-box
+// scrub (arrow held, wheel), a viewport drag. Its edits share a GestureId and undo as one step;
+// edits without a gesture (kNoGesture: typed values, menu actions, script calls) never merge.
+using GestureId = quint64;
+inline constexpr GestureId kNoGesture = 0;
+GestureId newGestureId(); // unique for the process, never kNoGesture
+
 struct PropertyEdit {
     EntityRef entity;
     std::string name;
     scene::PropertyValue value;
+    GestureId gesture = kNoGesture;
 };
 
 struct AppliedEdit {

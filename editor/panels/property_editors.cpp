@@ -1,11 +1,14 @@
 #include "panels/property_editors.h"
 
+#include "panels/gesture_tracker.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QSignalBlocker>
+#include <QSlider>
 #include <QSpinBox>
 
 #include <algorithm>
@@ -35,15 +38,70 @@ QDoubleSpinBox* makeSpin(const scene::PropertyInfo& info, QWidget* parent) {
     return spin;
 }
 
+// The tracker lives as long as the widget it watches.
+GestureTracker* trackGestures(QWidget* owner, std::initializer_list<QObject*> watched) {
+    auto* tracker = new GestureTracker(owner);
+    for (QObject* w : watched) tracker->watch(w);
+    return tracker;
+}
+
+// A slider beside the spin box for ranges an artist sweeps (roughness, cone angles): finite and
+// not wider than kSliderMaxSpan. kSliderSteps positions; the spin box stays exact.
+constexpr double kSliderMaxSpan = 1000.0;
+constexpr int kSliderSteps = 1000;
+
+bool wantsSlider(const scene::PropertyInfo& info) {
+    return info.min > -1e29 && info.max < 1e29 && info.max - info.min <= kSliderMaxSpan;
+}
+
 PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent) {
-    auto* spin = makeSpin(info, parent);
+    if (!wantsSlider(info)) {
+        auto* spin = makeSpin(info, parent);
+        if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
+        GestureTracker* gestures = trackGestures(spin, {spin});
+        QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
+                         [commit, gestures](double v) { commit(float(v), gestures->current()); });
+        return {spin, [spin](const scene::PropertyValue& v) {
+                    if (auto* f = std::get_if<float>(&v)) {
+                        const QSignalBlocker block(spin);
+                        spin->setValue(*f);
+                    }
+                }};
+    }
+    auto* box = new QWidget(parent);
+    auto* layout = new QHBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    auto* slider = new QSlider(Qt::Horizontal, box);
+    slider->setObjectName("slider");
+    slider->setRange(0, kSliderSteps);
+    auto* spin = makeSpin(info, box);
+    spin->setObjectName("spin");
     if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
-    QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
-                     [commit](double v) { commit(float(v)); });
-    return {spin, [spin](const scene::PropertyValue& v) {
+    layout->addWidget(slider, 1);
+    layout->addWidget(spin);
+    const double lo = spinMin(info), span = spinMax(info) - spinMin(info);
+    auto toSlider = [lo, span](double v) { return int(std::lround((v - lo) / span * kSliderSteps)); };
+    auto setSliderQuietly = [slider, toSlider](double v) {
+        const QSignalBlocker block(slider);
+        slider->setValue(toSlider(v));
+    };
+    GestureTracker* gestures = trackGestures(box, {slider, spin});
+    QObject::connect(slider, &QSlider::sliderPressed, gestures, &GestureTracker::begin);
+    QObject::connect(slider, &QSlider::sliderReleased, gestures, &GestureTracker::end);
+    QObject::connect(slider, &QSlider::valueChanged, spin, [spin, lo, span](int position) {
+        spin->setValue(lo + span * double(position) / kSliderSteps); // commits through the spin box
+    });
+    QObject::connect(spin, &QDoubleSpinBox::valueChanged, box,
+                     [commit, gestures, setSliderQuietly](double v) {
+                         setSliderQuietly(v);
+                         commit(float(v), gestures->current());
+                     });
+    return {box, [spin, setSliderQuietly](const scene::PropertyValue& v) {
                 if (auto* f = std::get_if<float>(&v)) {
                     const QSignalBlocker block(spin);
                     spin->setValue(*f);
+                    setSliderQuietly(*f);
                 }
             }};
 }
@@ -53,7 +111,9 @@ PropertyEditor intEditor(const scene::PropertyInfo& info, CommitValue commit, QW
     spin->setRange(int(std::max(info.min, -kSpinLimit)), int(std::min(info.max, kSpinLimit)));
     spin->setKeyboardTracking(false);
     if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
-    QObject::connect(spin, &QSpinBox::valueChanged, spin, [commit](int v) { commit(v); });
+    GestureTracker* gestures = trackGestures(spin, {spin});
+    QObject::connect(spin, &QSpinBox::valueChanged, spin,
+                     [commit, gestures](int v) { commit(v, gestures->current()); });
     return {spin, [spin](const scene::PropertyValue& v) {
                 if (auto* i = std::get_if<int>(&v)) {
                     const QSignalBlocker block(spin);
@@ -70,20 +130,22 @@ PropertyEditor vectorEditor(const scene::PropertyInfo& info, int components, Com
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     auto spins = std::make_shared<std::vector<QDoubleSpinBox*>>();
+    auto* gestures = new GestureTracker(box);
     for (int i = 0; i < components; ++i) {
         auto* spin = makeSpin(info, box);
         spin->setObjectName(QStringLiteral("component%1").arg(i));
         layout->addWidget(spin);
         spins->push_back(spin);
+        gestures->watch(spin);
     }
     for (auto* spin : *spins)
-        QObject::connect(spin, &QDoubleSpinBox::valueChanged, box, [spins, components, commit] {
+        QObject::connect(spin, &QDoubleSpinBox::valueChanged, box, [spins, components, commit, gestures] {
             glm::vec3 v(0.0f);
             for (int i = 0; i < components; ++i) v[i] = float((*spins)[size_t(i)]->value());
             if (components == 2)
-                commit(glm::vec2(v.x, v.y));
+                commit(glm::vec2(v.x, v.y), gestures->current());
             else
-                commit(v);
+                commit(v, gestures->current());
         });
     return {box, [spins](const scene::PropertyValue& value) {
                 glm::vec3 v(0.0f);
@@ -99,7 +161,7 @@ PropertyEditor vectorEditor(const scene::PropertyInfo& info, int components, Com
 
 PropertyEditor boolEditor(CommitValue commit, QWidget* parent) {
     auto* check = new QCheckBox(parent);
-    QObject::connect(check, &QCheckBox::toggled, check, [commit](bool on) { commit(on); });
+    QObject::connect(check, &QCheckBox::toggled, check, [commit](bool on) { commit(on, kNoGesture); });
     return {check, [check](const scene::PropertyValue& v) {
                 if (auto* b = std::get_if<bool>(&v)) {
                     const QSignalBlocker block(check);
@@ -112,7 +174,7 @@ PropertyEditor enumEditor(const scene::PropertyInfo& info, CommitValue commit, Q
     auto* combo = new QComboBox(parent);
     for (const auto& option : info.enumOptions) combo->addItem(QString::fromStdString(option));
     QObject::connect(combo, &QComboBox::activated, combo,
-                     [combo, commit](int) { commit(combo->currentText().toStdString()); });
+                     [combo, commit](int) { commit(combo->currentText().toStdString(), kNoGesture); });
     return {combo, [combo](const scene::PropertyValue& v) {
                 if (auto* s = std::get_if<std::string>(&v)) {
                     const QSignalBlocker block(combo);
@@ -134,7 +196,7 @@ PropertyEditor idRefEditor(const scene::PropertyInfo& info, const scene::Scene& 
     default: break;
     }
     QObject::connect(combo, &QComboBox::activated, combo, [combo, commit](int index) {
-        commit(combo->itemData(index).value<scene::EntityId>());
+        commit(combo->itemData(index).value<scene::EntityId>(), kNoGesture);
     });
     return {combo, [combo](const scene::PropertyValue& v) {
                 if (auto* id = std::get_if<scene::EntityId>(&v)) {
@@ -147,7 +209,7 @@ PropertyEditor idRefEditor(const scene::PropertyInfo& info, const scene::Scene& 
 PropertyEditor textEditor(CommitValue commit, QWidget* parent) {
     auto* line = new QLineEdit(parent);
     QObject::connect(line, &QLineEdit::editingFinished, line, [line, commit] {
-        if (line->isModified()) commit(line->text().toStdString());
+        if (line->isModified()) commit(line->text().toStdString(), kNoGesture);
         line->setModified(false);
     });
     return {line, [line](const scene::PropertyValue& v) {

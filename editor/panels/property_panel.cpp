@@ -95,9 +95,12 @@ void PropertyPanel::rebuild(const scene::Scene& scene, EntityRef ref) {
         PropertyEditor editor;
         if (info.set) {
             const std::string name = info.name;
-            editor = createPropertyEditor(info, scene, [this, ref, name](const scene::PropertyValue& v) {
-                emit editRequested(PropertyEdit{ref, name, v});
-            }, m_table);
+            editor = createPropertyEditor(
+                info, scene,
+                [this, ref, name](const scene::PropertyValue& v, GestureId gesture) {
+                    emit editRequested(PropertyEdit{ref, name, v, gesture});
+                },
+                m_table);
             editor.show(info.get(entity));
             m_table->setCellWidget(i, 1, editor.widget);
         } else {

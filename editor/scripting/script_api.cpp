@@ -1,8 +1,10 @@
 #include "scripting/script_api.h"
 
+#include "app/editor_actions.h"
 #include "app/error_reporter.h"
 #include "app/main_window.h"
 #include "app/scene_document.h"
+#include "app/unsaved_changes_prompt.h"
 #include "panels/entity_ref.h"
 #include "panels/outline_panel.h"
 #include "viewport/render_controller.h"
@@ -73,8 +75,11 @@ std::optional<scene::PropertyValue> toPropertyValue(const scene::Scene& scene,
         break;
     case scene::PropertyType::IdRef:
         if (v.isString()) {
-            auto ref = findEntityByName(scene, v.toString().toStdString());
-            if (ref && ref->kind == info.refersTo) return ref->id;
+            // The kind is known: a plain name is never ambiguous here; "kind:name" works too.
+            std::string name = v.toString().toStdString();
+            const std::string prefix = std::string(scene::entityKindName(info.refersTo)) + ":";
+            if (name.rfind(prefix, 0) == 0) name = name.substr(prefix.size());
+            if (auto ref = findEntityOfKind(scene, info.refersTo, name)) return ref->id;
         } else if (v.isNumber()) {
             return scene::EntityId(v.toNumber());
         }
@@ -157,18 +162,53 @@ bool AppApi::saveImage(const QString& path) {
     return status ? true : fail(QString::fromStdString(status.error().message()));
 }
 
-bool AppApi::saveScene(const QString& path) {
+bool AppApi::waitForSave(const std::function<void()>& start) {
     SceneDocument* document = m_window->document();
     bool done = false;
     QString error;
     QMetaObject::Connection ok = connect(document, &SceneDocument::saved, this, [&] { done = true; });
     QMetaObject::Connection bad = connect(document, &SceneDocument::saveFailed, this,
                                           [&](const QString& message) { done = true; error = message; });
-    document->saveAs(path);
+    start();
     waitUntil([&] { return done; }, QDeadlineTimer::Forever);
     disconnect(ok);
     disconnect(bad);
     return error.isEmpty() ? true : fail(error);
+}
+
+bool AppApi::save() {
+    if (!m_window->document()->scene()) return fail("save: no scene is open");
+    return waitForSave([this] { m_window->document()->save(); });
+}
+
+bool AppApi::saveScene(const QString& path, const QString& lighting) {
+    std::optional<LightingSave> choice;
+    if (!lighting.isEmpty()) {
+        choice = parseLightingSave(lighting.toStdString());
+        if (!choice)
+            return fail(QStringLiteral("saveScene: lighting must be \"copy\", \"inline\", \"setup\" or "
+                                       "\"reference\", not \"%1\"").arg(lighting));
+    }
+    return waitForSave([this, path, choice] { m_window->document()->saveAs(path, choice); });
+}
+
+bool AppApi::answerPrompts(const QString& answer) {
+    std::optional<PromptAnswer> parsed;
+    if (answer == "save") parsed = PromptAnswer::Save;
+    else if (answer == "discard") parsed = PromptAnswer::Discard;
+    else if (answer == "cancel") parsed = PromptAnswer::Cancel;
+    else if (!answer.isEmpty())
+        return fail(QStringLiteral("answerPrompts: expected \"save\", \"discard\", \"cancel\" or \"\", not \"%1\"")
+                        .arg(answer));
+    m_window->actions()->prompt()->setScriptedAnswer(parsed);
+    return true;
+}
+
+bool AppApi::isModified() const { return m_window->document()->isModified(); }
+
+QString AppApi::windowTitle() const {
+    QString title = m_window->windowTitle();
+    return title.replace("[*]", m_window->isWindowModified() ? "*" : "");
 }
 
 bool AppApi::grabWindow(const QString& path) {
@@ -180,8 +220,8 @@ bool AppApi::grabWindow(const QString& path) {
 bool AppApi::setProperty(const QString& entity, const QString& name, const QJSValue& value) {
     auto scene = m_window->document()->scene();
     if (!scene) return fail("setProperty: no scene is open");
-    auto ref = findEntityByName(*scene, entity.toStdString());
-    if (!ref) return fail(QStringLiteral("setProperty: no entity named '%1'").arg(entity));
+    auto ref = resolveEntity(*scene, entity.toStdString());
+    if (!ref) return fail("setProperty: " + QString::fromStdString(ref.error().message()));
     const scene::PropertyInfo* info = scene::findProperty(ref->kind, name.toStdString());
     if (!info)
         return fail(QStringLiteral("setProperty: %1 has no property '%2'")
@@ -197,8 +237,8 @@ bool AppApi::setProperty(const QString& entity, const QString& name, const QJSVa
 QJSValue AppApi::getProperty(const QString& entity, const QString& name) {
     auto scene = m_window->document()->scene();
     if (!scene) return fail("getProperty: no scene is open"), QJSValue();
-    auto ref = findEntityByName(*scene, entity.toStdString());
-    if (!ref) return fail(QStringLiteral("getProperty: no entity named '%1'").arg(entity)), QJSValue();
+    auto ref = resolveEntity(*scene, entity.toStdString());
+    if (!ref) return fail("getProperty: " + QString::fromStdString(ref.error().message())), QJSValue();
     const scene::PropertyInfo* info = scene::findProperty(ref->kind, name.toStdString());
     auto value = scene::getProperty(*scene, *ref, name.toStdString());
     if (!info || !value)
@@ -218,9 +258,10 @@ bool AppApi::triggerAction(const QString& objectName) {
 bool AppApi::select(const QString& entity) {
     auto scene = m_window->document()->scene();
     if (!scene) return fail("select: no scene is open");
-    auto ref = findEntityByName(*scene, entity.toStdString());
-    if (!ref || !m_window->outline()->select(*ref))
-        return fail(QStringLiteral("select: no entity named '%1' in the outline").arg(entity));
+    auto ref = resolveEntity(*scene, entity.toStdString());
+    if (!ref) return fail("select: " + QString::fromStdString(ref.error().message()));
+    if (!m_window->outline()->select(*ref))
+        return fail(QStringLiteral("select: '%1' is not in the outline").arg(entity));
     return true;
 }
 

@@ -8,6 +8,8 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
+
 class QJSEngine;
 
 namespace wavelit::editor {
@@ -26,11 +28,24 @@ public:
     Q_INVOKABLE int waitForSamples(int spp, double timeoutSeconds = 600.0);
     // The viewport's current frame: .exr = linear radiance, .png = tone-mapped with the exposure.
     Q_INVOKABLE bool saveImage(const QString& path);
-    Q_INVOKABLE bool saveScene(const QString& path);
+    // Save (File → Save): the scene to its file and, if edited, the lighting setup it refers to.
+    Q_INVOKABLE bool save();
+    // Save As without a dialog: `lighting` says where edited referenced lighting goes — "copy"
+    // (default: a *.wllight beside the scene), "inline", "setup" (into the shared setup) or
+    // "reference" (keep the reference; only for unedited lighting).
+    Q_INVOKABLE bool saveScene(const QString& path, const QString& lighting = QString());
+    // Answers every "Save changes?" prompt from now on: "save", "discard" or "cancel"; "" clears
+    // (then, while a script runs, prompts answer "cancel").
+    Q_INVOKABLE bool answerPrompts(const QString& answer);
+    Q_INVOKABLE bool isModified() const;
+    // The window title as shown, with "*" when the document has unsaved changes.
+    Q_INVOKABLE QString windowTitle() const;
     // A screenshot of the whole editor window (PNG), for documentation and bug reports.
     Q_INVOKABLE bool grabWindow(const QString& path);
-    // entity: "camera", "environment", "render" or a light/object/material name; name: the
+    // entity: "camera", "environment", "render", "kind:name" ("material:ground") or a light/object/
+    // material name that only one entity has (else the error lists the candidates); name: the
     // registry's property name; value: number, bool, string, [x, y(, z)] or an entity name (IdRef).
+    // Each call is its own undo step.
     Q_INVOKABLE bool setProperty(const QString& entity, const QString& name, const QJSValue& value);
     Q_INVOKABLE QJSValue getProperty(const QString& entity, const QString& name);
     Q_INVOKABLE bool triggerAction(const QString& objectName);
@@ -48,6 +63,7 @@ public:
 
 private:
     bool fail(const QString& message); // throws in the engine, returns false
+    bool waitForSave(const std::function<void()>& start);
 
     MainWindow* m_window;
     QJSEngine* m_engine;

@@ -236,7 +236,9 @@ void EditorWindowTest::panelEditRestartsRenderAndUndoes() {
     const auto original = window.document()->scene();
     const scene::Material& material = original->materials.front();
     QVERIFY(window.outline()->select({scene::EntityKind::Material, material.id}));
-    auto* roughness = qobject_cast<QDoubleSpinBox*>(window.properties()->editorFor("roughness"));
+    QWidget* roughnessRow = window.properties()->editorFor("roughness");
+    QVERIFY(roughnessRow);
+    auto* roughness = roughnessRow->findChild<QDoubleSpinBox*>("spin");
     QVERIFY(roughness);
     QCOMPARE(float(roughness->value()), material.roughness);
 
@@ -245,7 +247,7 @@ void EditorWindowTest::panelEditRestartsRenderAndUndoes() {
     roughness->setValue(newRoughness);
     QCOMPARE(window.document()->scene()->materials.front().roughness, float(newRoughness));
     QCOMPARE(window.renderer()->generation(), generation + 1); // a Restart edit
-    QCOMPARE(window.properties()->editorFor("roughness"), static_cast<QWidget*>(roughness));
+    QCOMPARE(window.properties()->editorFor("roughness"), roughnessRow);
 
     window.actions()->action("actionUndo")->trigger();
     QCOMPARE(window.document()->scene()->materials.front().roughness, material.roughness);

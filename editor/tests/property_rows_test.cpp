@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTableWidget>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -113,7 +114,7 @@ private slots:
         auto outOfRange = applyEdit(s, {{scene::EntityKind::Material, 1}, "roughness", 2.0f});
         QVERIFY(!outOfRange.ok());
     }
-    void commandsMergeAndUndo() {
+    void commandsMergeOnlyWithinAGesture() {
         auto current = std::make_shared<const scene::Scene>(makeScene());
         auto commit = [&](const PropertyEdit& e) {
             auto applied = applyEdit(*current, e);
@@ -122,30 +123,74 @@ private slots:
         };
         QUndoStack stack;
         const EntityRef gold{scene::EntityKind::Material, 1};
-        for (float r : {0.3f, 0.4f, 0.5f}) {
-            auto applied = applyEdit(*current, {gold, "roughness", r});
+        auto push = [&](PropertyEdit edit) {
+            auto applied = applyEdit(*current, edit);
             QVERIFY(applied.ok());
-            stack.push(new PropertyCommand({gold, "roughness", r}, applied->previous, commit));
-        }
+            stack.push(new PropertyCommand(edit, applied->previous, commit));
+        };
+        // Three separate edits (no gesture: typed values, script calls): three steps.
+        for (float r : {0.3f, 0.4f, 0.5f}) push({gold, "roughness", r});
+        QCOMPARE(stack.count(), 3);
+        // One drag (one gesture): one step, even across many values.
+        const GestureId drag = newGestureId();
+        QVERIFY(drag != kNoGesture);
+        for (float r : {0.6f, 0.7f, 0.8f}) push({gold, "roughness", r, drag});
+        QCOMPARE(stack.count(), 4);
+        // A second drag of the same property is a step of its own.
+        const GestureId secondDrag = newGestureId();
+        QVERIFY(secondDrag != drag);
+        for (float r : {0.85f, 0.9f}) push({gold, "roughness", r, secondDrag});
+        QCOMPARE(stack.count(), 5);
         const EntityRef ring{scene::EntityKind::Object, 2};
-        auto moved = applyEdit(*current, {ring, "translation", glm::vec3(0, 1, 0)});
-        QVERIFY(moved.ok());
-        stack.push(new PropertyCommand({ring, "translation", glm::vec3(0, 1, 0)}, moved->previous, commit));
-        QCOMPARE(stack.count(), 2); // the three roughness edits merged
-        QCOMPARE(current->materials[0].roughness, 0.5f);
+        push({ring, "translation", glm::vec3(0, 1, 0), secondDrag}); // another property: never merges
+        QCOMPARE(stack.count(), 6);
+        QCOMPARE(current->materials[0].roughness, 0.9f);
         stack.undo();
         QCOMPARE(current->objects[0].transform.translation, glm::vec3(0.0f));
         stack.undo();
-        QCOMPARE(current->materials[0].roughness, 0.25f); // back to before all three
+        QCOMPARE(current->materials[0].roughness, 0.8f); // the second drag, whole
+        stack.undo();
+        QCOMPARE(current->materials[0].roughness, 0.5f); // the first drag, whole
+        stack.undo();
+        QCOMPARE(current->materials[0].roughness, 0.4f); // one typed edit at a time
         stack.redo();
         QCOMPARE(current->materials[0].roughness, 0.5f);
+    }
+    void entityNamesResolveByKind() {
+        scene::Scene s = makeScene();
+        scene::Material ground;
+        ground.id = 5;
+        ground.name = "ground";
+        s.materials.push_back(ground);
+        scene::Object groundObject;
+        groundObject.id = 6;
+        groundObject.name = "ground";
+        groundObject.materialId = 5;
+        s.objects.push_back(groundObject);
+
+        QCOMPARE(resolveEntity(s, "material:ground").value(), (EntityRef{scene::EntityKind::Material, 5}));
+        QCOMPARE(resolveEntity(s, "object:ground").value(), (EntityRef{scene::EntityKind::Object, 6}));
+        QCOMPARE(resolveEntity(s, "light:Sun").value(), (EntityRef{scene::EntityKind::Light, 3}));
+        QCOMPARE(resolveEntity(s, "Ring").value(), (EntityRef{scene::EntityKind::Object, 2}));
+        QCOMPARE(resolveEntity(s, "camera").value().kind, scene::EntityKind::Camera);
+        auto ambiguous = resolveEntity(s, "ground");
+        QVERIFY(!ambiguous.ok());
+        const QString message = QString::fromStdString(ambiguous.error().message());
+        QVERIFY2(message.contains("object:ground") && message.contains("material:ground"), qPrintable(message));
+        auto wrongKind = resolveEntity(s, "light:ground");
+        QVERIFY(!wrongKind.ok());
+        QVERIFY(QString::fromStdString(wrongKind.error().message()).contains("light:ground"));
+        QCOMPARE(qualifiedName(s, {scene::EntityKind::Material, 5}), std::string("material:ground"));
+        QCOMPARE(qualifiedName(s, {scene::EntityKind::Environment, 0}), std::string("environment"));
     }
     void panelEditsGoThroughSignalAndRefreshInPlace() {
         scene::Scene s = makeScene();
         PropertyPanel panel;
         const EntityRef gold{scene::EntityKind::Material, 1};
         panel.showEntity(s, gold);
-        auto* roughness = qobject_cast<QDoubleSpinBox*>(panel.editorFor("roughness"));
+        QWidget* row = panel.editorFor("roughness");
+        QVERIFY(row);
+        auto* roughness = row->findChild<QDoubleSpinBox*>("spin");
         QVERIFY(roughness);
         QCOMPARE(roughness->value(), 0.25);
         QCOMPARE(roughness->minimum(), 0.0); // the registry's range
@@ -158,13 +203,36 @@ private slots:
         QCOMPARE(edit.entity, gold);
         QCOMPARE(edit.name, std::string("roughness"));
         QCOMPARE(std::get<float>(edit.value), 0.5f);
+        QCOMPARE(edit.gesture, kNoGesture); // a value set without a gesture stands alone
         QCOMPARE(s.materials[0].roughness, 0.25f); // the panel never edits the scene itself
+
+        // A slider drag: every value it sends shares one gesture; the next drag gets another.
+        auto* slider = row->findChild<QSlider*>("slider");
+        QVERIFY(slider);
+        auto drag = [&](std::initializer_list<int> positions) {
+            slider->setSliderDown(true); // sliderPressed, as a mouse press on the handle
+            for (int p : positions) slider->setValue(p);
+            slider->setSliderDown(false);
+        };
+        drag({600, 700, 800});
+        QCOMPARE(spy.count(), 3);
+        const GestureId first = spy.at(0).at(0).value<PropertyEdit>().gesture;
+        QVERIFY(first != kNoGesture);
+        for (int i = 0; i < 3; ++i) QCOMPARE(spy.at(i).at(0).value<PropertyEdit>().gesture, first);
+        QCOMPARE(std::get<float>(spy.at(2).at(0).value<PropertyEdit>().value), 0.8f);
+        QCOMPARE(roughness->value(), 0.8); // the spin box follows the slider
+        spy.clear();
+        drag({300});
+        QCOMPARE(spy.count(), 1);
+        QVERIFY(spy.at(0).at(0).value<PropertyEdit>().gesture != first);
+        spy.clear();
 
         // The document's answer (here: an undo back to 0.25) refreshes the same widget, silently.
         s.materials[0].roughness = 0.125f;
         panel.showEntity(s, gold);
-        QCOMPARE(panel.editorFor("roughness"), static_cast<QWidget*>(roughness));
+        QCOMPARE(panel.editorFor("roughness"), row);
         QCOMPARE(roughness->value(), 0.125);
+        QCOMPARE(slider->value(), 125);
         QCOMPARE(spy.count(), 0);
 
         // Another entity rebuilds the rows.

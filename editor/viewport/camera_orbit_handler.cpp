@@ -50,6 +50,7 @@ bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
         auto* mouse = static_cast<QMouseEvent*>(event);
         if (mouse->button() != Qt::LeftButton) break;
         m_dragging = true;
+        m_gestures.begin();
         m_dragStart = m_camera;
         m_pressPos = mouse->position();
         return true;
@@ -60,18 +61,20 @@ bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
         // Dragging right turns the view right: the camera moves the other way round the target.
         m_camera = orbitCamera(m_dragStart, -float(delta.x()) * kOrbitDegPerPixel,
                                float(delta.y()) * kOrbitDegPerPixel);
-        emit cameraMoved(m_camera.position);
+        emit cameraMoved(m_camera.position, m_gestures.current());
         return true;
     }
     case QEvent::MouseButtonRelease:
         if (!m_dragging || static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton) break;
         m_dragging = false;
+        m_gestures.end();
         return true;
     case QEvent::Wheel: {
         const float notches = float(static_cast<QWheelEvent*>(event)->angleDelta().y()) / 120.0f;
         if (notches == 0.0f) break;
         m_camera = dollyCamera(m_camera, std::pow(kDollyPerWheelStep, notches));
-        emit cameraMoved(m_camera.position);
+        m_gestures.scrub();
+        emit cameraMoved(m_camera.position, m_gestures.current());
         return true;
     }
     default: break;

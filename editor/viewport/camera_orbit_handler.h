@@ -3,9 +3,11 @@
 // about +Y, pitch clamped short of the poles so `up` stays valid); the wheel dollies toward the
 // target. The handler only proposes a camera position through cameraMoved; the document turns it
 // into a registry edit (a Restart change) and the render thread picks the newest one up between
-// passes, so a fast drag costs one restart per pass, not one per mouse event.
+// passes, so a fast drag costs one restart per pass, not one per mouse event. A drag, or a run of
+// wheel notches, is one gesture: it undoes in one step.
 #pragma once
 
+#include "panels/gesture_tracker.h"
 #include "scene/scene.h"
 
 #include <QObject>
@@ -33,12 +35,13 @@ public:
     bool isDragging() const { return m_dragging; }
 
 signals:
-    void cameraMoved(const glm::vec3& position);
+    void cameraMoved(const glm::vec3& position, wavelit::editor::GestureId gesture);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    GestureTracker m_gestures;
     scene::Camera m_camera;
     scene::Camera m_dragStart;
     QPointF m_pressPos;
