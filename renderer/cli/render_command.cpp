@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/render_flags.h"
 #include "render/direction_sampler.h"
+#include "render/outlier_tracer.h"
 #include "render/render_session.h"
 #include "render/sampler_tables_cache.h"
 #include "scene/atomic_file.h"
@@ -23,6 +24,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -174,7 +176,7 @@ using util::lowerExtension;
 
 int run(const std::vector<std::string>& argv) {
     std::set<std::string> flags = renderValueFlags();
-    flags.insert({"-o", "--spp", "--time", "--report"});
+    flags.insert({"-o", "--spp", "--time", "--report", "--trace-outliers", "--outliers"});
     auto args = Args::parse(argv, flags);
     if (!args)
         return reportError(args.error());
@@ -192,6 +194,12 @@ int run(const std::vector<std::string>& argv) {
         return reportError(spp.error());
     if (!seconds)
         return reportError(seconds.error());
+    auto outlierCount = args->intValue("--trace-outliers", 0, 1, 100000);
+    if (!outlierCount)
+        return reportError(outlierCount.error());
+    if (args->has("--trace-outliers") != args->has("--outliers"))
+        return reportError(makeError(ErrorKind::Usage, "",
+                                     "--trace-outliers N and --outliers OUT.json go together"));
     // Usage errors in the shared render flags surface before the scene is loaded.
     if (auto early = renderOptionsFromArgs(*args, scene::RenderDefaults{}); !early)
         return reportError(early.error());
@@ -219,10 +227,21 @@ int run(const std::vector<std::string>& argv) {
     const bool timed = args->has("--time");
     const int maxSpp = timed && !args->has("--spp") ? kMaxSpp : *spp;
     util::Timer passes;
+    // The outlier tracer (issue 20) reads the image after every pass: each pass's sample is the
+    // running sum's increment, whatever the device.
+    std::optional<render::OutlierMonitor> monitor;
+    if (args->has("--trace-outliers"))
+        monitor.emplace(options.width, options.height, *outlierCount);
     do {
         auto status = (*session)->renderPass();
         if (!status)
             return reportError(status.error());
+        if (monitor) {
+            auto mean = (*session)->image();
+            if (!mean)
+                return reportError(mean.error());
+            monitor->addPass(*mean);
+        }
     } while ((*session)->samplesPerPixel() < maxSpp && (!timed || passes.seconds() < *seconds));
 
     auto image = (*session)->image();
@@ -237,6 +256,19 @@ int run(const std::vector<std::string>& argv) {
                 stats.samplesPerPixel ? stats.timings.passSeconds / stats.samplesPerPixel : 0.0);
     if (stats.validationMessages > 0)
         std::fprintf(stderr, "warning: %d Vulkan validation messages\n", stats.validationMessages);
+    if (monitor) {
+        const std::vector<render::OutlierSample> outliers = monitor->outliers();
+        auto paths = render::traceOutlierPaths(*scene, options, outliers);
+        if (!paths)
+            return reportError(paths.error());
+        const std::string outliersPath = *args->value("--outliers");
+        auto ok = scene::writeFileAtomic(
+            outliersPath, render::outliersJson(options, stats.deviceName, monitor->passes(),
+                                               outliers, *paths, *image));
+        if (!ok)
+            return reportError(ok.error());
+        std::printf("wrote %s (%zu outliers)\n", outliersPath.c_str(), outliers.size());
+    }
     if (auto reportPath = args->value("--report")) {
         auto ok = scene::writeFileAtomic(
             *reportPath, reportJson(scenePath, *output, options, args->has("--sampler"), stats,

@@ -123,7 +123,7 @@ const CpuPathTracer::ResolvedMaterial& CpuPathTracer::material(float index) cons
     return m_materials[std::min(i, m_materials.size() - 1)];
 }
 
-glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
+glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record) const {
     const uint64_t pixelIndex = uint64_t(y) * uint64_t(m_options.width) + uint64_t(x);
     util::Pcg32 rng(m_options.seed ^ (uint64_t(pass) * kPassStride), pixelIndex);
     // Draws are separate statements: C++ leaves the order of function arguments unspecified,
@@ -135,16 +135,43 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
     glm::vec3 dir = m_camera.direction(x, y, jx, jy);
     glm::vec3 L(0.0f), beta(1.0f);
     float scatterPdfOfDir = 0.0f; // solid-angle pdf with which the last vertex drew `dir`
+    if (record) {
+        *record = PathRecord{};
+        record->x = x;
+        record->y = y;
+        record->pass = pass;
+    }
+    // Path record helpers (no-ops without a record).
+    std::string techniqueOfDir = "camera";
+    glm::vec3 fcosOfDir(1.0f), betaBeforeDir(1.0f);
+    auto addEvent = [&](int vertex, const char* kind, const std::string& technique, double pdf,
+                        std::vector<PathPdf> pdfs, double weight, glm::vec3 fcos,
+                        glm::vec3 radiance, glm::vec3 throughput, glm::vec3 contribution) {
+        if (!record || contribution == glm::vec3(0.0f)) return;
+        record->events.push_back(PathEvent{vertex, kind, technique, pdf, std::move(pdfs), weight,
+                                           fcos, radiance, throughput, contribution});
+    };
     for (int depth = 0;; ++depth) {
+        const int from = depth - 1; // the vertex that drew `dir`
         scene::BvhHit hit;
         const bool found =
             scene::intersect(*m_bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit);
         // Analytic lights crossed before the surface (or the sun, when the ray escapes).
-        if (!m_lights.empty())
-            L += beta * m_lights.emissionAlongRay(origin, dir, found ? hit.t : kInfinity,
-                                                  scatterPdfOfDir, depth == 0, m_lightStrategy);
+        if (!m_lights.empty()) {
+            const glm::vec3 e = m_lights.emissionAlongRay(origin, dir, found ? hit.t : kInfinity,
+                                                          scatterPdfOfDir, depth == 0,
+                                                          m_lightStrategy);
+            L += beta * e;
+            addEvent(from, "light-hit", techniqueOfDir, scatterPdfOfDir, {}, 1.0, fcosOfDir, e,
+                     betaBeforeDir, beta * e);
+        }
         if (!found) {
-            L += beta * m_environment.radiance(dir);
+            const glm::vec3 e = m_environment.radiance(dir);
+            L += beta * e;
+            if (record)
+                addEvent(from, "env-escape", techniqueOfDir, scatterPdfOfDir,
+                         {{"continuation", scatterPdfOfDir}}, 1.0, fcosOfDir, e, betaBeforeDir,
+                         beta * e);
             break;
         }
         const SurfacePoint sp = surfaceAt(*m_bvh, hit, origin, dir);
@@ -160,7 +187,24 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
         const DirectionSampler* sampler = ds ? &*ds : nullptr;
 
         L += beta * mat.emission;
-        if (depth == m_options.bounces) break;
+        addEvent(from, "emission", techniqueOfDir, scatterPdfOfDir, {}, 1.0, fcosOfDir,
+                 mat.emission, betaBeforeDir, beta * mat.emission);
+        PathVertex* vertex = nullptr;
+        if (record) {
+            record->vertices.push_back(PathVertex{});
+            vertex = &record->vertices.back();
+            vertex->depth = depth;
+            const size_t mi = std::min(size_t(std::max(0.0f, sp.materialIndex)),
+                                       m_materials.size() - 1);
+            vertex->material = mi < m_scene->materials.size() ? m_scene->materials[mi].name
+                                                              : std::string("(default)");
+            vertex->position = sp.position;
+            vertex->throughputIn = beta;
+        }
+        if (depth == m_options.bounces) {
+            if (vertex) vertex->end = "bounce limit";
+            break;
+        }
 
         // Lights are sampled from the point the continuation ray leaves from, so both MIS
         // strategies evaluate their pdfs at the same point.
@@ -170,7 +214,9 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
             const float uSelect = rng.nextFloat();
             const float ul1 = rng.nextFloat();
             const float ul2 = rng.nextFloat();
-            L += beta * nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2);
+            const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2);
+            L += beta * e;
+            addEvent(depth, "light-nee", "light", 0.0, {}, 1.0, glm::vec3(1.0f), e, beta, beta * e);
         }
 
         const float u1 = rng.nextFloat();
@@ -179,22 +225,49 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass) const {
         // `bsdf` keeps the draw order the Vulkan tracer shares (docs/estimator.md).
         const float u3 = sampler ? rng.nextFloat() : 0.0f;
         const ScatterDraw s = sampleScatter(mat, frame, sampler, wo, u1, u2, u3);
-        if (!s.valid || !(s.pdf > 0.0f) || s.wi.z <= 0.0f) break;
+        if (!s.valid || !(s.pdf > 0.0f) || s.wi.z <= 0.0f) {
+            if (vertex) vertex->end = "no valid direction";
+            break;
+        }
         const glm::vec3 wi = frame.toWorld(s.wi);
-        if (glm::dot(wi, ng) <= 0.0f) break; // below the true surface: light leak otherwise
+        if (glm::dot(wi, ng) <= 0.0f) { // below the true surface: light leak otherwise
+            if (vertex) vertex->end = "below the geometric surface";
+            break;
+        }
+        if (vertex) {
+            vertex->technique = s.technique;
+            vertex->pdf = s.pdf;
+            if (sampler)
+                for (const ComponentPdf& c : sampler->componentPdfs(wi)) {
+                    vertex->pdfs.push_back({std::string(c.technique), c.pdf});
+                    vertex->pdfs.push_back({"share:" + std::string(c.technique), c.weight});
+                }
+            else
+                vertex->pdfs.push_back({"bsdf", s.pdf});
+            vertex->fcos = s.f * s.wi.z;
+            techniqueOfDir = s.technique;
+            fcosOfDir = s.f * s.wi.z;
+            betaBeforeDir = beta;
+        }
         beta *= s.f * (s.wi.z / s.pdf);
         scatterPdfOfDir = s.pdf;
 
         if (depth >= kRussianRouletteDepth) {
             float q = std::max(kMinContinueProbability,
                                1.0f - std::max(beta.r, std::max(beta.g, beta.b)));
-            if (rng.nextFloat() < q) break;
+            if (vertex) vertex->continueProbability = 1.0f - q;
+            if (rng.nextFloat() < q) {
+                if (vertex) vertex->end = "russian roulette";
+                break;
+            }
             beta /= 1.0f - q;
         }
+        if (vertex) vertex->throughputOut = beta;
 
         origin = next;
         dir = wi;
     }
+    if (record) record->value = L;
     return L;
 }
 
@@ -205,14 +278,14 @@ CpuPathTracer::ScatterDraw CpuPathTracer::sampleScatter(const ResolvedMaterial& 
                                                         float u3) const {
     if (!ds) {
         const plugins::BrdfSample s = mat.brdf->sample(mat.params, wo, u1, u2);
-        return ScatterDraw{s.wi, s.f, s.pdf, s.valid};
+        return ScatterDraw{s.wi, s.f, s.pdf, s.valid, "bsdf"};
     }
     // The estimator divides by the pdf of what was drawn (the mixture's, DESIGN.md §4).
     const DirectionSample d = ds->sample(u1, u2, u3);
     if (!d.valid)
         return ScatterDraw{};
     const glm::vec3 wi = frame.toLocal(d.wi);
-    return ScatterDraw{wi, mat.brdf->eval(mat.params, wo, wi), d.pdf, true};
+    return ScatterDraw{wi, mat.brdf->eval(mat.params, wo, wi), d.pdf, true, d.technique};
 }
 
 float CpuPathTracer::scatterPdf(const ResolvedMaterial& mat, const util::Frame& frame,

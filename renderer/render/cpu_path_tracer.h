@@ -23,6 +23,7 @@
 #include "render/direction_sampler.h"
 #include "render/integrator.h"
 #include "render/light_set.h"
+#include "render/path_record.h"
 #include "render/render_options.h"
 #include "render/sampler_tables_cache.h"
 #include "scene/bvh.h"
@@ -67,7 +68,8 @@ public:
     // One path through pixel (x, y) in pass `pass`: the estimator's single-sample radiance.
     // Deterministic: a function of (seed, pass, pixel) only. Public so tests (and GPU-vs-CPU
     // comparisons) can look at individual paths.
-    glm::vec3 samplePixel(int x, int y, int pass) const;
+    // With `record`, also writes the path down term by term (path_record.h; the outlier tracer).
+    glm::vec3 samplePixel(int x, int y, int pass, PathRecord* record = nullptr) const;
 
     int threadCount() const { return m_threadCount; }
     // The direction sampler's report (env resolution, per-material choices); empty for `bsdf`.
@@ -104,6 +106,7 @@ private:
         glm::vec3 f{0.0f};
         float pdf = 0.0f;
         bool valid = false;
+        const char* technique = "";
     };
     ScatterDraw sampleScatter(const ResolvedMaterial& mat, const util::Frame& frame,
                               const DirectionSampler* ds, const glm::vec3& wo, float u1, float u2,

@@ -330,6 +330,23 @@ double DirectionSampler::pdfDouble(const glm::vec3& wi) const {
 
 float DirectionSampler::pdf(const glm::vec3& wi) const { return float(pdfDouble(wi)); }
 
+namespace {
+const char* techniqueName(int t) {
+    static const char* const names[] = {"uniform", "cosine", "bsdf", "env", "product"};
+    return names[t];
+}
+} // namespace
+
+std::vector<ComponentPdf> DirectionSampler::componentPdfs(const glm::vec3& wi) const {
+    const glm::vec3 local = toShading(wi);
+    const glm::dvec3 envLocal = m_tables->environment().toLocal(glm::dvec3(wi));
+    std::vector<ComponentPdf> out;
+    for (const Component& c : m_components)
+        out.push_back({techniqueName(int(c.technique)), c.weight,
+                       techniquePdf(c.technique, local, envLocal)});
+    return out;
+}
+
 DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
     // u3 picks the technique (cumulative weights); the last one absorbs rounding.
     size_t pick = 0;
@@ -366,6 +383,7 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
         break;
     }
     DirectionSample out;
+    out.technique = techniqueName(int(m_components[pick].technique));
     if (envLocal) {
         // Tabulated techniques: their pdfs are evaluated at the double direction that was
         // drawn. Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a

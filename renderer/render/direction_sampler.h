@@ -125,6 +125,14 @@ struct DirectionSample {
     glm::vec3 wi{0.0f};
     float pdf = 0.0f; // solid angle
     bool valid = false;
+    const char* technique = ""; // the mixture component that drew wi (for path records)
+};
+
+// One mixture component's share and pdf at a direction (path records, issue 20).
+struct ComponentPdf {
+    const char* technique;
+    double weight;
+    double pdf; // solid angle, of the component alone
 };
 
 class DirectionSampler {
@@ -137,6 +145,8 @@ public:
     DirectionSample sample(float u1, float u2, float u3) const;
     float pdf(const glm::vec3& wi) const;
     double pdfDouble(const glm::vec3& wi) const;
+    // Every component's share and own pdf at world direction wi (sum of weight x pdf = pdf(wi)).
+    std::vector<ComponentPdf> componentPdfs(const glm::vec3& wi) const;
     // What this sampler does at this point and why (for the render report).
     std::string describe() const;
 
