@@ -97,6 +97,7 @@ private slots:
     void separateEditsUndoAloneAndADragUndoesWhole();
     void entitiesByKindAndName();
     void modifiedMarkerAndSaveChangesPrompt();
+    void unknownBrdfAndTypoKeysAreRefused();
 };
 
 void DocumentSaveTest::referencedLightingEditsSurviveSaveAs() {
@@ -318,6 +319,37 @@ void DocumentSaveTest::modifiedMarkerAndSaveChangesPrompt() {
     QCOMPARE(scene::loadScene(path.toStdString())->materials.front().roughness, 0.25f);
     QVERIFY(!other.api->answerPrompts("maybe"));
     QVERIFY(other.takeError().contains("maybe"));
+}
+
+
+void DocumentSaveTest::unknownBrdfAndTypoKeysAreRefused() {
+    MainWindow window(quietSettings());
+    window.show();
+    const QString glossy = resource("scenes/glossy_sphere.wlscene");
+    QVERIFY(openAndWait(window, glossy));
+    Script script(&window);
+    QVERIFY(!script.api->setProperty("material:chrome", "brdf", QJSValue("no_such_brdf")));
+    const QString refused = script.takeError();
+    QVERIFY2(refused.contains("no_such_brdf") && refused.contains("lambert") && refused.contains("ggx"),
+             qPrintable(refused));
+    QVERIFY(!script.api->isModified());
+
+    // Files with problems: a dialog lists them and the open document stays.
+    const QDir bad(QFileInfo(defaultScenePath()).dir().filePath("../../tests/data/bad"));
+    struct Case { const char* file; QStringList mentions; };
+    for (const Case& c : {Case{"unknown_brdf.wlscene", {"ground", "no_such_brdf", "lambert"}},
+                          Case{"typo_key.wlscene", {"roughnes", "did you mean 'roughness'"}}}) {
+        const int errorsBefore = window.errors()->count();
+        window.document()->open(bad.filePath(c.file));
+        QTRY_VERIFY_WITH_TIMEOUT(window.errors()->count() > errorsBefore, kTimeoutMs);
+        QVERIFY(window.errors()->currentDialog());
+        const QString text = window.errors()->currentDialog()->text();
+        QVERIFY2(text.contains(c.file), qPrintable(text));
+        for (const QString& m : c.mentions) QVERIFY2(text.contains(m), qPrintable(text));
+        window.errors()->currentDialog()->accept();
+        QCOMPARE(window.document()->path(), glossy);
+        QVERIFY(window.document()->scene());
+    }
 }
 
 QTEST_MAIN(DocumentSaveTest)
