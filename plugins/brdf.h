@@ -1,4 +1,4 @@
-// BRDF plugins (DESIGN.md §2 "plugins/"): one per .cpp file, looked up by the name a Material
+// BRDF plugins (architecture.md §2 "plugins/"): one per .cpp file, looked up by the name a Material
 // stores (scene.h: Material::brdf). Each has a GLSL twin (<name>.glsl) that the Vulkan tracer
 // splices in; both compute docs/estimator.md's formulas, and tests compare them.
 //
@@ -9,7 +9,7 @@
 // - sample draws wi from u1, u2 in [0,1) and returns f(wo, wi) and the pdf in SOLID ANGLE; a
 //   direction at or below the horizon is an invalid sample (the path ends; docs/estimator.md).
 // - pdf(wo, wi) equals what sample returns for that wi (tests check it), 0 below the horizon.
-// - invert(wo, wi) returns the (u1, u2) that sample maps to wi (STYLE.md: samplers round-trip),
+// - invert(wo, wi) returns the (u1, u2) that sample maps to wi (architecture.md §9: samplers round-trip),
 //   or nothing where no u reaches wi (below the horizon, wo behind the surface).
 // - Plugins are stateless and immutable, so one instance is shared by every thread.
 #pragma once
@@ -28,7 +28,7 @@ namespace wavelit::plugins {
 // The material parameters a BRDF reads (scene::Material carries the same fields).
 struct BrdfParams {
     glm::vec3 baseColor{0.8f};
-    float roughness = 0.5f; // [0, 1]; GGX alpha = roughness^2 (DESIGN.md §3)
+    float roughness = 0.5f; // [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
 };
 
 struct BrdfSample {
@@ -39,7 +39,7 @@ struct BrdfSample {
 };
 
 // Parameter metadata, so the property registry and the editor's panels can describe plugin
-// parameters without knowing the plugin (STYLE.md: "plugins register their parameters the same
+// parameters without knowing the plugin (architecture.md §9: "plugins register their parameters the same
 // way"). `name` is the Material field / JSON key.
 enum class BrdfParameterType { Color, Float };
 

@@ -1,4 +1,4 @@
-// The checks every BRDF plugin must pass (DESIGN.md §8), run for each registered plugin over
+// The checks every BRDF plugin must pass (architecture.md §8), run for each registered plugin over
 // shading configurations that include grazing views (θo = 85°), a mirror-like lobe (r = 0.02)
 // and the roughest one (r = 1): chi-square goodness-of-fit of sample() against pdf(), pdf
 // consistency, Monte Carlo albedo against quadrature, reciprocity and energy conservation.

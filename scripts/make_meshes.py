@@ -2,7 +2,7 @@
 """Generates the bundled meshes in resources/meshes/ (plain python3, no numpy).
 
 Meshes are subdivided even where two triangles would do: the wavelet relighting preview
-(DESIGN.md §5 A) shades per vertex, so a ground plane needs vertices where shadows fall.
+(architecture.md §5 A) shades per vertex, so a ground plane needs vertices where shadows fall.
 All meshes are in metres, +Y up, counter-clockwise front faces, with normals and UVs.
 
     python3 scripts/make_meshes.py [OUTDIR]     (default: resources/meshes)

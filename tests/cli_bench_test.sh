@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `wavelit-cli bench` contract (DESIGN.md §6): writes bench.json/csv/png and one EXR per sampler
+# `wavelit-cli bench` contract (architecture.md §6): writes bench.json/csv/png and one EXR per sampler
 # that ran; RMSE against the reference falls as samples accumulate (Monte Carlo: ~1/sqrt(spp));
 # exit 2 on bad usage, 1 naming a missing scene or a reference of the wrong size. Tiny renders.
 # Usage: bash cli_bench_test.sh <wavelit-cli> <source-dir>

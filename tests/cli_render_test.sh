@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `wavelit-cli render` contract (DESIGN.md §6): exit 0 and files written for .exr/.png with a
+# `wavelit-cli render` contract (architecture.md §6): exit 0 and files written for .exr/.png with a
 # JSON report; exit 2 on bad usage; exit 1 naming the file for a missing or corrupt scene, mesh
 # or environment map. Renders are tiny (32x32, 2 spp) because lavapipe shares the CPU.
 # Usage: bash cli_render_test.sh <wavelit-cli> <source-dir>

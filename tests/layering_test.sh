@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Enforces DESIGN.md §2: each layer includes only layers under it, and nothing below editor/
+# Enforces architecture.md §2: each layer includes only layers under it, and nothing below editor/
 # includes Qt. Prints every offending include and exits 1 if there is one. scene may use plugins
 # (which sit on util only) for the registry's list of BRDF names.
 set -u

@@ -1,4 +1,4 @@
-// `wavelit-cli render --report` lists the direction samplers' tables (issue 6; DESIGN.md §7 "the
+// `wavelit-cli render --report` lists the direction samplers' tables (issue 6; architecture.md §7 "the
 // render report lists each choice and its reason"; fields in docs/file-formats.md "Render
 // report"): for `wavelet` the env map's level, size and build time and per used material the
 // policy (mode, reason, levels, budgets), size and build time, with totals that add up and the

@@ -1,4 +1,4 @@
-// The `wavelit-cli wavelet product|sample` contract (DESIGN.md §6), run as a user would: small EXR
+// The `wavelit-cli wavelet product|sample` contract (architecture.md §6), run as a user would: small EXR
 // files written with scene::writeExr into a temporary folder, the CLI started through
 // WAVELIT_CLI_PATH, results checked against pixel-domain brute force and chi-square.
 #include "scene/image_io.h"

@@ -1,4 +1,4 @@
-// ErrorReporter: every user-facing error ends here (STYLE.md: errors -> a dialog). Shows a
+// ErrorReporter: every user-facing error ends here (architecture.md §9: errors -> a dialog). Shows a
 // window-modal QMessageBox with open(), never exec(), so no nested event loop runs inside a slot
 // and tests (or scripts) can read the dialog and close it. Also logs to stderr and remembers the
 // last message for the script API.

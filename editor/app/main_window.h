@@ -1,6 +1,6 @@
 // MainWindow: assembles the docks (outline, properties), the viewport and the status bar, and
 // wires signals between them, the document and the render controller. Behaviour lives in those
-// parts (STYLE.md §3: the window does no work of its own). The title carries the document's name
+// parts (architecture.md §9: the window does no work of its own). The title carries the document's name
 // and a modified marker; closing with unsaved changes asks first (app/unsaved_changes_prompt.h).
 #pragma once
 

@@ -1,5 +1,5 @@
 // PropertyEdit: one property change as a value (the unit the undo stack and the render queue will
-// carry, STYLE.md "Threads"). apply() checks the value against the registry and returns the edited
+// carry, architecture.md §9 "Threads"). apply() checks the value against the registry and returns the edited
 // scene copy (meshes and images are shared, so a copy is cheap) plus what the edit costs: a
 // Display edit (exposure) only re-tone-maps, Restart/Rebuild edits go to the render thread.
 #pragma once

@@ -15,7 +15,7 @@ scene::Camera orbitCamera(const scene::Camera& camera, float yawDeg, float pitch
     const glm::vec3 offset = camera.position - camera.target;
     const float distance = glm::length(offset);
     if (distance < kMinDistance) return camera;
-    // Spherical coordinates about +Y (DESIGN.md §3: +Y up).
+    // Spherical coordinates about +Y (architecture.md §3: +Y up).
     const float pitch = glm::degrees(std::asin(std::clamp(offset.y / distance, -1.0f, 1.0f)));
     const float yaw = glm::degrees(std::atan2(offset.x, offset.z));
     const float newPitch = glm::radians(std::clamp(pitch + pitchDeg, -kMaxPitchDeg, kMaxPitchDeg));

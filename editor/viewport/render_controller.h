@@ -21,7 +21,7 @@ class RenderWorker;
 
 struct RenderSettings {
     render::DeviceChoice device = render::DeviceChoice::Auto;
-    // The product sampler is the editor's default, as the CLI's (DESIGN.md §5.B).
+    // The product sampler is the editor's default, as the CLI's (architecture.md §5.B).
     render::SamplerKind sampler = render::SamplerKind::Wavelet;
     int width = 0;  // 0: the scene's render defaults
     int height = 0;

@@ -1,6 +1,6 @@
 // Display tone mapping of a linear render: scale by 2^EV (Camera::exposureEv), clamp to [0, 1],
 // encode with the sRGB transfer function, quantise to 8 bits. A display step only: it reads the
-// accumulated mean image and never touches accumulation (DESIGN.md §5.B), so changing exposure
+// accumulated mean image and never touches accumulation (architecture.md §5.B), so changing exposure
 // re-maps the last frame instead of restarting the render.
 #pragma once
 

@@ -35,7 +35,7 @@ private:
 };
 
 // Prints "wavelit-cli: <message>" to stderr and returns the exit code for the error's kind
-// (Usage -> 2, everything else -> 1), as DESIGN.md §6 fixes.
+// (Usage -> 2, everything else -> 1), as architecture.md §6 fixes.
 int reportError(const util::Error& error);
 
 } // namespace wavelit::cli

@@ -1,5 +1,5 @@
 // `wavelit-cli bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR`
-// Speed versus error at equal time (DESIGN.md §8): each sampler renders for the same wall time;
+// Speed versus error at equal time (architecture.md §8): each sampler renders for the same wall time;
 // after passes 1, 2, 4, 8, ... and at the end the RMSE against the reference is recorded.
 // Writes DIR/bench.json, DIR/bench.csv, DIR/bench.png (log-log RMSE vs seconds) and
 // DIR/<sampler>.exr. Without --reference, a reference is rendered first with the `bsdf` sampler

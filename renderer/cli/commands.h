@@ -1,4 +1,4 @@
-// The wavelit-cli subcommands (DESIGN.md §6). Each takes the arguments after its name and returns
+// The wavelit-cli subcommands (architecture.md §6). Each takes the arguments after its name and returns
 // the process exit code: 0 success, 1 bad input, 2 bad usage.
 #pragma once
 

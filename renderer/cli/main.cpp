@@ -1,4 +1,4 @@
-// wavelit-cli: headless rendering, validation and wavelet tools (DESIGN.md §6).
+// wavelit-cli: headless rendering, validation and wavelet tools (architecture.md §6).
 #include "cli/commands.h"
 
 #include <cstdio>

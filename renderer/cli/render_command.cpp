@@ -1,6 +1,6 @@
 // `wavelit-cli render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]
 //  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]`
-// (DESIGN.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
+// (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
 // the options, timings, choices with their reasons and the sampler tables built (sizes, build
@@ -60,7 +60,7 @@ const char* productModeName(const render::MaterialProductTables* t) {
     return t->policy().mode == render::ProductMode::Product ? "product" : "bsdf-lobe";
 }
 
-// The direction samplers' tables (DESIGN.md §7: what was built for this scene and why), or null
+// The direction samplers' tables (architecture.md §7: what was built for this scene and why), or null
 // when the sampler needs none (`bsdf`) or the integrator reports none. Fields:
 // docs/file-formats.md "Render report".
 std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& scene) {

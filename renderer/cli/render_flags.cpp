@@ -16,7 +16,7 @@ const std::set<std::string>& renderValueFlags() {
 util::Result<render::RenderOptions> renderOptionsFromArgs(const Args& args,
                                                           const scene::RenderDefaults& defaults) {
     render::RenderOptions o;
-    // The CLI's default sampler is the wavelet product sampler (DESIGN.md §5.B); the library's
+    // The CLI's default sampler is the wavelet product sampler (architecture.md §5.B); the library's
     // RenderOptions default stays `bsdf`, the cheapest, for code that does not choose.
     o.sampler = render::SamplerKind::Wavelet;
     auto width = args.intValue("--width", defaults.width, 1, kMaxImageSide);

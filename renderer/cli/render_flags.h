@@ -1,4 +1,4 @@
-// The render flags shared by `render` and `bench` (DESIGN.md §6): --width --height --seed
+// The render flags shared by `render` and `bench` (architecture.md §6): --width --height --seed
 // --bounces --device --sampler, with defaults from the scene's render settings.
 #pragma once
 

@@ -1,4 +1,4 @@
-// `wavelit-cli validate FILE` (DESIGN.md §6): loads a scene, lighting setup, mesh or image the way
+// `wavelit-cli validate FILE` (architecture.md §6): loads a scene, lighting setup, mesh or image the way
 // the renderer would. Exit 1 with the first problem when the file cannot be used; exit 0 with a
 // one-line summary when it can. Unknown keys and unknown BRDFs are load errors (scene_io.h), so
 // validate, `render` and the editor refuse the same files with the same message. What loading

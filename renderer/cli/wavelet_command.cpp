@@ -1,4 +1,4 @@
-// wavelit-cli wavelet product|sample (DESIGN.md §6): the wavelet core on square image files.
+// wavelit-cli wavelet product|sample (architecture.md §6): the wavelet core on square image files.
 //
 //   wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]
 //   wavelet sample A.exr [B.exr ...] --count N [--seed S] [--keep K] -o SAMPLES.csv
@@ -191,7 +191,7 @@ int runSample(const std::vector<std::string>& argv) {
     if (!factors)
         return reportError(factors.error());
 
-    // Luminance of the RGB product (DESIGN.md §6), then its full pyramid for sampling.
+    // Luminance of the RGB product (architecture.md §6), then its full pyramid for sampling.
     constexpr double kLuminance[3] = {0.2126, 0.7152, 0.0722};
     wv::SquareGrid luminance(factors->level);
     for (int c = 0; c < 3; ++c) {

@@ -1,6 +1,6 @@
 // Environment radiance lookup of the CPU reference tracer, exactly as docs/estimator.md
 // "Environment" specifies (the GPU tracer's env lookup is its twin): the world direction is
-// rotated by −yaw about +Y, mapped to equirect (u, v) with DESIGN.md §3's convention, and the
+// rotated by −yaw about +Y, mapped to equirect (u, v) with architecture.md §3's convention, and the
 // NEAREST texel is returned — piecewise constant, so the env sampling tables (issue 6) describe
 // exactly the function the tracer evaluates. No image → a constant intensity × tint.
 // Immutable after construction; safe to share between threads.

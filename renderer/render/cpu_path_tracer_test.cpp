@@ -156,7 +156,7 @@ TEST(CpuPathTracer, ImageIsTheMeanOfSamplePixelWhateverTheThreadCount) {
 }
 
 TEST(CpuPathTracer, HardCasesStayFiniteAndNonNegative) {
-    // DESIGN.md §8's hard cases at once: an HDR sun 10^6× the sky, a black lower half, a
+    // architecture.md §8's hard cases at once: an HDR sun 10^6× the sky, a black lower half, a
     // mirror-like GGX sphere (r = 0.02) on a diffuse ground without vertex normals (n_g path),
     // grazing views at the sphere's rim, four bounces with roulette.
     auto env = std::make_shared<util::ImageRGB>(64, 32, glm::vec3(0.0f));

@@ -1,5 +1,5 @@
 // Every sampler kind at six shading configurations under two environments (issue 6 acceptance;
-// DESIGN.md §8): chi-square goodness-of-fit against its own pdf, pdf(sample) == returned pdf, no
+// architecture.md §8): chi-square goodness-of-fit against its own pdf, pdf(sample) == returned pdf, no
 // NaN/Inf, and the mean of g/p equal to a dense integral within 3 standard errors (the exact
 // per-sample variance of the dense grid gives the standard error, so heavy-tailed estimators are
 // judged by their true spread, not by a sample variance that misses the sun).

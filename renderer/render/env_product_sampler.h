@@ -1,6 +1,6 @@
 // EnvProductSampler: one shading point's product distribution env x (BRDF x cos) over a
 // ProductWindow of the octahedral square, refined below its leaves by the environment's own
-// pyramid (DESIGN.md §4.1, items 1 and 2), with an exact pdf.
+// pyramid (architecture.md §4.1, items 1 and 2), with an exact pdf.
 //
 // Two ways to get the product's scaling-coefficient quadtree (2^m over the window):
 //  - buildSparse: the paper's path. The env factor is a truncated Haar image (K largest, from the

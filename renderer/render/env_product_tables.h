@@ -1,4 +1,4 @@
-// Per-material tables of the wavelet product sampler (issue 6; DESIGN.md §4.1, §5.B, §7).
+// Per-material tables of the wavelet product sampler (issue 6; architecture.md §4.1, §5.B, §7).
 //
 // The paper's §5.2 localises the environment around the reflection vector w_r as "a 2D set of
 // 2D wavelet images indexed by a quantised reflection direction". Here the index is an
@@ -12,7 +12,7 @@
 //
 // The policy (ProductPolicy) is chosen per material from the lobe width against what the
 // environment resolves: a lobe narrower than one env texel sees a constant environment and BSDF
-// sampling is near-ideal for the lobe (DESIGN.md §4.1 item 2) — `mode` records the choice and `reason`
+// sampling is near-ideal for the lobe (architecture.md §4.1 item 2) — `mode` records the choice and `reason`
 // the why, for the render report. Tables are built in double, truncated, and exported as flat
 // float/uint32 arrays for the GPU (flatten(); layout in docs/wavelet-sampler.md).
 // Immutable after build; thread-safe for const use.

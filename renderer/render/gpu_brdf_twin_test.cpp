@@ -1,6 +1,6 @@
 // Each BRDF's GLSL twin (plugins/<name>.glsl) against its C++ plugin (plugins/<name>.cpp): the
 // same (wo, u1, u2, params) through sample, eval and pdf on the Vulkan device and on the CPU.
-// STYLE.md: a C++ BRDF and its GLSL twin are never left without a test comparing them.
+// architecture.md §9: a C++ BRDF and its GLSL twin are never left without a test comparing them.
 #include "plugins/brdf.h"
 #include "render/gpu_path_tracer.h"
 #include "util/rng.h"

@@ -1,6 +1,6 @@
 // The analytic lights' GLSL twin (shaders/common/lights.glsl) against LightSampler
 // (light_sampler.cpp, light_spherical_rect.cpp): the same (light, p, u1, u2, probe direction)
-// through sample, pdf and evalHit on the Vulkan device and on the CPU. STYLE.md: a C++ function
+// through sample, pdf and evalHit on the Vulkan device and on the CPU. architecture.md §9: a C++ function
 // and its GLSL twin are never left without a test comparing them.
 #include "render/gpu_path_tracer.h"
 #include "render/gpu_scene_data.h"

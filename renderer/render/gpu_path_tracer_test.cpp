@@ -289,7 +289,7 @@ TEST(GpuPathTracer, SetSceneSwapsDataAndKeepsThePipeline) {
 }
 
 TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
-    // DESIGN.md §5: object move -> BVH only; env rotation -> env side (and the product tables,
+    // architecture.md §5: object move -> BVH only; env rotation -> env side (and the product tables,
     // which hold env factors); material edit -> that material's tables.
     scene::Material mat;
     mat.id = 1;

@@ -8,7 +8,7 @@
 // same object the GPU got; the BSDF is the C++ twin of the GLSL plugin); then:
 //  - chi-square of the GPU's directions against that pdf (p > Sidak-corrected 0.01);
 //  - the pdf the GPU returned with each direction equals that pdf at the direction (exactness of
-//    the estimator's division, DESIGN.md §4);
+//    the estimator's division, architecture.md §4);
 //  - the pdf integrates to 1 (minus the BSDF's invalid mass);
 //  - oracle only: the GPU's window is the CPU's chooseWindow for the exact axis, and its leaf
 //    masses are the dense product the CPU tabulates over that window (brute force).

@@ -44,7 +44,7 @@ public:
                                   std::shared_ptr<const scene::Bvh> /*bvh*/) {
         return util::makeError(util::ErrorKind::Unsupported, "", "setScene not supported");
     }
-    // The direction samplers' tables in use (render report, DESIGN.md §7): nullptr for `bsdf` and
+    // The direction samplers' tables in use (render report, architecture.md §7): nullptr for `bsdf` and
     // for integrators that build none.
     virtual std::shared_ptr<const DirectionSamplerTables> samplerTables() const { return nullptr; }
     // What the integrator's SamplerTablesCache built and reused since it was created.

@@ -1,4 +1,4 @@
-// Options of a render: what the CLI flags (DESIGN.md §6) and the editor set.
+// Options of a render: what the CLI flags (architecture.md §6) and the editor set.
 #pragma once
 
 #include "util/result.h"
@@ -11,7 +11,7 @@ namespace wavelit::render {
 
 enum class DeviceChoice { Auto, Vulkan, Cpu };
 
-// Direction samplers for the speed/error report (DESIGN.md §5.B). The CPU reference tracer runs all
+// Direction samplers for the speed/error report (architecture.md §5.B). The CPU reference tracer runs all
 // of them (render/direction_sampler.h), and so does the Vulkan tracer (shaders/common/
 // direction_sampler.glsl; its Oracle is dense at a coarser grid, gpu_sampler_data.h).
 // The CLI and the editor default to Wavelet; RenderOptions' own default is Bsdf (no tables).

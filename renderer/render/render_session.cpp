@@ -1,7 +1,7 @@
 // RenderSession: scene copy + BVH + one integrator picked by RenderOptions::device.
 // Auto prefers Vulkan and falls back to the CPU reference tracer only when the Vulkan tracer
 // cannot serve the options (no usable device, a sampler not on the GPU yet: errors naming no file);
-// a broken shader is reported, never hidden behind a silent CPU fallback (STYLE.md: no silent
+// a broken shader is reported, never hidden behind a silent CPU fallback (architecture.md §9: no silent
 // fallbacks that draw a different image).
 #include "render/render_session.h"
 

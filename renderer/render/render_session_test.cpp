@@ -1,4 +1,4 @@
-// RenderSession end to end on the bundled default scene (DESIGN.md §6 file -> Vulkan image):
+// RenderSession end to end on the bundled default scene (architecture.md §6 file -> Vulkan image):
 // finite, not black, zero validation messages; plus the session's option checks.
 #include "render/render_session.h"
 

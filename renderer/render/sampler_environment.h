@@ -9,7 +9,7 @@
 //    one equirect texel near the equator;
 //  - its mip pyramid of cell averages (what product windows read as the env factor);
 //  - a HierarchicalSampler over it: the `env` technique and the fine pyramid that product
-//    samplers descend into below their own leaves (DESIGN.md §4.1, item 1).
+//    samplers descend into below their own leaves (architecture.md §4.1, item 1).
 // Rotation is an isometry, so solid-angle pdfs are the same in both frames.
 // Measures: pdfLocal is per unit SOLID ANGLE (square pdf / 4 pi, the octahedral Jacobian).
 // Immutable after build; const methods are thread-safe.

@@ -1,5 +1,5 @@
 // Dense integration of the environment-lighting integrand for sampler tests and the variance
-// study (issue 6; DESIGN.md §4.1's deterministic study, §8 "mean of f/p equals the integral").
+// study (issue 6; architecture.md §4.1's deterministic study, §8 "mean of f/p equals the integral").
 //
 // The integrand is g(w) = luminance(f(wo, w) cos(theta) L(w)) with L the environment exactly as
 // the tracers evaluate it: the NEAREST equirect texel (cpu_environment.h). L is constant on each

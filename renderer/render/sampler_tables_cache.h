@@ -1,5 +1,5 @@
 // SamplerTablesCache: the direction samplers' tables for a scene, kept across edits so each change
-// set rebuilds only what it invalidates (issue 6; DESIGN.md §5 "Edits reach the renderer as change
+// set rebuilds only what it invalidates (issue 6; architecture.md §5 "Edits reach the renderer as change
 // sets", §7 "Model only what a scene needs"):
 //   environment change (image, rotation, intensity, tint) -> the env tables and every material's
 //                                                            product tables (they hold env factors)

@@ -1,4 +1,4 @@
-// SamplerTablesCache (issue 6; DESIGN.md §5 change sets, §7): each edit rebuilds exactly the
+// SamplerTablesCache (issue 6; architecture.md §5 change sets, §7): each edit rebuilds exactly the
 // tables it invalidates, judged twice — by the cache's counters and by pointer identity of the
 // shared SamplerEnvironment / MaterialProductTables — and whatever is rebuilt or reused is the
 // same in content as a fresh build. Then the CPU tracer through RenderSession: an object move swaps

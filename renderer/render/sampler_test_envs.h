@@ -1,4 +1,4 @@
-// Environments for the sampler tests and the variance study (issue 6; DESIGN.md §4.1, §8):
+// Environments for the sampler tests and the variance study (issue 6; architecture.md §4.1, §8):
 // a synthetic sky with a small sun many times brighter, and bundled env maps box-downsampled to
 // a test-sized resolution. Deterministic; no randomness.
 #pragma once

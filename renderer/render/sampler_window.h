@@ -1,4 +1,4 @@
-// ProductWindow: the part of the octahedral square a product sampler covers (DESIGN.md §4.1,
+// ProductWindow: the part of the octahedral square a product sampler covers (architecture.md §4.1,
 // item 2: fit the product's domain to the lobe).
 //
 // A window is a square of side 2^-k whose origin lies on the grid of step 2^-(k+1) (half its

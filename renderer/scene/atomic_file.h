@@ -1,4 +1,4 @@
-// Atomic file replacement (DESIGN.md §6): the bytes go to a temporary file in the destination's
+// Atomic file replacement (architecture.md §6): the bytes go to a temporary file in the destination's
 // folder (same file system, so rename is atomic), are flushed and fsync'ed, and only then renamed
 // over the target. Any failure removes the temporary and leaves the old file byte-identical; the
 // error says which step failed and why (strerror).

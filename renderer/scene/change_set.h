@@ -1,4 +1,4 @@
-// Edits as change sets (STYLE.md "Threads"; DESIGN.md §5): the undo stack's commands and what the
+// Edits as change sets (architecture.md §9 "Threads"; architecture.md §5): the undo stack's commands and what the
 // render thread drains between passes. A change set is a list of edits — a property's old and new
 // value, or an entity added/removed with its full state and position — so it can be applied,
 // inverted (undo) and merged (newest value per property wins, the first old value is kept, so the

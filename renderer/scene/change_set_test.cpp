@@ -61,7 +61,7 @@ PropertyValue otherValue(const PropertyInfo& info, const PropertyValue& current)
     return current;
 }
 
-// What each kind's edits must invalidate, stated independently of the registry (DESIGN.md §5).
+// What each kind's edits must invalidate, stated independently of the registry (architecture.md §5).
 Invalidation expectedInvalidation(EntityRef ref, const std::string& name) {
     if (name == "name") return {};
     switch (ref.kind) {

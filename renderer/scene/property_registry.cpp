@@ -1,5 +1,5 @@
 // The declarations: one block per entity kind. Units and ranges follow scene.h; the change kind
-// and factor follow DESIGN.md §5 (env edit -> L, light k -> L_k, object j -> O_j + BVH,
+// and factor follow architecture.md §5 (env edit -> L, light k -> L_k, object j -> O_j + BVH,
 // material m -> its BRDF factor, camera -> all BRDF factors toward the view).
 #include "scene/property_registry.h"
 

@@ -1,8 +1,8 @@
 // The property registry: every editable field of every entity type is declared here once — name
 // (the JSON key and the script name), label, type, unit, range, default, tooltip, what an edit costs
-// (ChangeKind) and which cached factor it invalidates (DESIGN.md §5). JSON reading/writing
+// (ChangeKind) and which cached factor it invalidates (architecture.md §5). JSON reading/writing
 // (property_json.h), validation, change sets (change_set.h), the editor's panels and scripting are
-// all driven from this table, so adding a property is one declaration (STYLE.md "one registry").
+// all driven from this table, so adding a property is one declaration (architecture.md §9 "one registry").
 // Qt-free; the tables are immutable after first use and safe to read from any thread.
 #pragma once
 
@@ -26,11 +26,11 @@ const char* entityKindName(EntityKind kind); // "camera", "material", ... (scrip
 enum class PropertyType { Bool, Int, Float, Vec2, Vec3, Color, String, Enum, Path, IdRef };
 const char* propertyTypeName(PropertyType type);
 
-// What an edit costs the renderer (STYLE.md "Threads"): Display = tone mapping only, never resets
+// What an edit costs the renderer (architecture.md §9 "Threads"): Display = tone mapping only, never resets
 // accumulation; Restart = reset accumulation; Rebuild = geometry changed: BVH rebuild + restart.
 enum class ChangeKind { Display, Restart, Rebuild };
 
-// The cached factor an edit makes stale (DESIGN.md §5 A: L, L_k, O_j, BRDF, camera).
+// The cached factor an edit makes stale (architecture.md §5 A: L, L_k, O_j, BRDF, camera).
 // ObjectMaterial(j): object j now uses another material, so its vertices' BRDF factor changes.
 enum class FactorKind { None, Environment, Light, ObjectGeometry, ObjectMaterial, MaterialBrdf, Camera };
 const char* factorKindName(FactorKind kind);
@@ -84,7 +84,7 @@ util::Status checkValue(const PropertyInfo& info, const PropertyValue& value);
 // known: lambert, ggx" when the property has an enumNoun, else "'laser' is not one of point, ...".
 std::string unknownOptionMessage(const PropertyInfo& info, const std::string& value);
 
-// Absolute paths and home-relative paths are rejected: files must stay movable (DESIGN.md §6).
+// Absolute paths and home-relative paths are rejected: files must stay movable (architecture.md §6).
 bool isPortableRelativePath(const std::string& path);
 
 // Entity lookup and generic get/set by property name on a scene.

@@ -1,4 +1,4 @@
-// The scene model everything edits and renders (DESIGN.md §3, §6). Plain data: the property
+// The scene model everything edits and renders (architecture.md §3, §6). Plain data: the property
 // registry (property_registry.h) describes every editable field once, and JSON IO, validation,
 // the editor's panels and scripting are all driven from that description.
 //
@@ -28,7 +28,7 @@ namespace wavelit::scene {
 using EntityId = uint64_t;
 inline constexpr EntityId kInvalidId = 0;
 
-// Perspective camera: vertical field of view in degrees, position + target + up (DESIGN.md §3).
+// Perspective camera: vertical field of view in degrees, position + target + up (architecture.md §3).
 struct Camera {
     glm::vec3 position{0.0f, 1.0f, 4.0f};
     glm::vec3 target{0.0f, 0.0f, 0.0f};
@@ -56,7 +56,7 @@ struct Material {
     std::string name;
     std::string brdf = "lambert";
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};
-    float roughness = 0.5f; // in [0, 1]; GGX alpha = roughness^2 (DESIGN.md §3)
+    float roughness = 0.5f; // in [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
     glm::vec3 emission{0.0f}; // emitted radiance, W/(m^2 sr)
     std::string extras{};
 };
@@ -79,7 +79,7 @@ struct Object {
     std::string extras{};
 };
 
-// HDR environment: equirectangular map (DESIGN.md §3 mapping), yaw rotation about +Y in degrees.
+// HDR environment: equirectangular map (architecture.md §3 mapping), yaw rotation about +Y in degrees.
 // Radiance = map(d) * intensity * tint. An empty path means a constant environment of
 // `intensity * tint` (used by furnace tests and as a neutral default).
 struct Environment {

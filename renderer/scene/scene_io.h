@@ -1,4 +1,4 @@
-// *.wlscene / *.wllight files (DESIGN.md §6): JSON with "format" and "version"; paths stored
+// *.wlscene / *.wllight files (architecture.md §6): JSON with "format" and "version"; paths stored
 // relative to the file that names them; older versions migrated, newer ones rejected with a
 // clear error. Loading also loads the meshes (Assimp) and the environment image (OpenEXR/.hdr)
 // so a loaded Scene is ready to render. Saves are atomic (see atomic_file.h).

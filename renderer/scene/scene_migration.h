@@ -1,5 +1,5 @@
 // Upgrades older *.wlscene / *.wllight JSON to the current layout before it is read, so the
-// reader only knows one version (DESIGN.md §6: older versions migrated, newer ones rejected).
+// reader only knows one version (architecture.md §6: older versions migrated, newer ones rejected).
 //
 // Version 0 (pre-release files): the environment had "exposure" in EV stops instead of a linear
 // "intensity"; objects named their material by name ("material": "gold") instead of by id.

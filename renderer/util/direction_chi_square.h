@@ -1,5 +1,5 @@
 // Chi-square goodness-of-fit of a direction sampler against its own pdf over the whole sphere
-// (DESIGN.md §8, pbrt-v4's bsdfs_test style). Shared by the BRDF plugins and the render-layer
+// (architecture.md §8, pbrt-v4's bsdfs_test style). Shared by the BRDF plugins and the render-layer
 // samplers (issue 6), so every sampler is judged by the same histogram and the same integration.
 //
 // Cells are a (θ, φ) grid around `axis` with θ = π t^p, t uniform over the θ bins: p = 1 is a plain

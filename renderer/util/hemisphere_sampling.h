@@ -1,5 +1,5 @@
 // Direction samplers on the local hemisphere (z = normal) that every BRDF and the `uniform` /
-// `cosine` samplers of DESIGN.md §5.B share. Each has sample, pdf and invert (pbrt style) so tests
+// `cosine` samplers of architecture.md §5.B share. Each has sample, pdf and invert (pbrt style) so tests
 // can round-trip; pdfs are in SOLID ANGLE (sr^-1), inputs u in [0,1)^2.
 //
 // The cosine sampler goes through Shirley–Chiu's concentric disk map: it keeps stratification

@@ -1,5 +1,5 @@
-// The `uniform` and `cosine` direction samplers (DESIGN.md §5.B) and the shared shading frame:
-// chi-square against their pdfs, pdf consistency and invert round trips (STYLE.md: every sampler).
+// The `uniform` and `cosine` direction samplers (architecture.md §5.B) and the shared shading frame:
+// chi-square against their pdfs, pdf consistency and invert round trips (architecture.md §9: every sampler).
 #include "util/hemisphere_sampling.h"
 
 #include "util/direction_chi_square.h"

@@ -23,7 +23,7 @@ struct ImageRGB {
     const glm::vec3& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
 };
 
-// Rec.709 luminance, the weights DESIGN.md §6 fixes for sampling RGB factors.
+// Rec.709 luminance, the weights architecture.md §6 fixes for sampling RGB factors.
 inline float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 } // namespace wavelit::util

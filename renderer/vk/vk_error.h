@@ -1,4 +1,4 @@
-// Turning a failed VkResult into a util::Error that names the call that failed (STYLE.md: check
+// Turning a failed VkResult into a util::Error that names the call that failed (architecture.md §9: check
 // every VkResult). Device loss and out-of-memory become ErrorKind::Device so a render session can
 // enter its error state instead of crashing.
 #pragma once

@@ -1,4 +1,4 @@
-// Local cap domain (DESIGN.md §4.1, item 2): a spherical cap of half-angle thetaMax around an
+// Local cap domain (architecture.md §4.1, item 2): a spherical cap of half-angle thetaMax around an
 // axis (e.g. the reflection vector, the paper's §5.2 frame), mapped from the unit square so that
 // narrow lobes get the product's whole resolution instead of one texel of a whole-sphere map.
 //

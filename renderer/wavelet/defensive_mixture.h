@@ -1,4 +1,4 @@
-// Defensive mixtures (DESIGN.md §4, pitfalls): the wavelet sampler approximates the integrand, so
+// Defensive mixtures (architecture.md §4, pitfalls): the wavelet sampler approximates the integrand, so
 // where the approximation is zero and the integrand is not, an estimator dividing by the wavelet
 // pdf alone would be biased. Mixing in a distribution with full support (uniform over the square,
 // or the caller's BSDF sampler through mixturePdf) keeps every direction reachable, and the

@@ -1,4 +1,4 @@
-// Resampling an equirectangular environment (DESIGN.md §3: u = 0.5 + atan2(d.z, d.x) / 2 pi,
+// Resampling an equirectangular environment (architecture.md §3: u = 0.5 + atan2(d.z, d.x) / 2 pi,
 // v = acos(d.y) / pi, row 0 at the top) onto a sphere map's 2^n x 2^n face grids.
 //
 // Energy-preserving splatting rather than point lookups: every source texel is cut into S x S

@@ -48,7 +48,7 @@ TEST(EquirectResample, SunLandsWhereItsDirectionMaps) {
     const int w = 512, h = 256, sx = 300, sy = 60;
     const util::ImageRGB env = skyWithSun(w, h, sx, sy, 1e7f);
     const auto faces = resampleEquirect(env, map, 5);
-    // Direction of the sun texel centre by DESIGN.md §3's mapping.
+    // Direction of the sun texel centre by architecture.md §3's mapping.
     const double phi = 2.0 * std::numbers::pi * ((sx + 0.5) / w - 0.5),
                  theta = std::numbers::pi * (sy + 0.5) / h;
     const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta),

@@ -1,4 +1,4 @@
-// FactorProductTree: the factor cache of DESIGN.md §4 / paper §4 (eqs 24-27). m factors on one
+// FactorProductTree: the factor cache of architecture.md §4 / paper §4 (eqs 24-27). m factors on one
 // 2^n square are the leaves of a segment tree whose inner nodes hold the exact product of their
 // two children (wavelet products, product.h, each path picked by density). Replacing factor j (a
 // light moved, the environment rotated) invalidates only the nodes on j's path, so update()

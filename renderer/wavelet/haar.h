@@ -4,7 +4,7 @@
 // t = (x, y) in [0, 2^l)^2, three wavelets psi^m(l,t), m = 0 (difference in x), 1 (difference in
 // y), 2 (diagonal), each +-2^l on the square's quarters. Coefficients are inner products with the
 // basis, so a function's scaling coefficient at (l, t) is F0(l,t) = 2^-l * (average over the
-// square) and F0(0,0) is the integral (DESIGN.md §4, eqs 12-13).
+// square) and F0(0,0) is the integral (architecture.md §4, eqs 12-13).
 //
 // Dense coefficient layout (also the sort order of sparse coefficients): index 0 holds F0(0,0);
 // the details of level l occupy [4^l, 4^(l+1)), ordered by position (row-major) then m. So a
@@ -21,7 +21,7 @@
 namespace wavelit::wavelet {
 
 // 2^10 = 1024 texels per side: 1M coefficients in double (8 MiB) per factor; finer tables cost
-// more than the sampler gains (DESIGN.md §4.1 refines below the product resolution instead).
+// more than the sampler gains (architecture.md §4.1 refines below the product resolution instead).
 constexpr int kMaxLevel = 10;
 
 struct HaarImage {

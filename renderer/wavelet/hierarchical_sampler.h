@@ -6,7 +6,7 @@
 // descent on raw coefficients would use meaningless or negative probabilities. The tables are
 // built bottom-up from clamped leaf masses in double, then stored as float conditional
 // probabilities (each kept to float's relative precision, also near 0 and 1); the pdf returned
-// is that of the float tables, i.e. exact for what is sampled (DESIGN.md §4: the estimator must
+// is that of the float tables, i.e. exact for what is sampled (architecture.md §4: the estimator must
 // divide by the pdf of what was actually sampled).
 //
 // Each descent step picks the row (y half) with u2 using the marginal, then the column with u1

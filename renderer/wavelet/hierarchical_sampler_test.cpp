@@ -10,7 +10,7 @@
 namespace wavelit::wavelet {
 namespace {
 
-// Chi-square significance (DESIGN.md §8, issue 4).
+// Chi-square significance (architecture.md §8, issue 4).
 constexpr double kChiSquareAlpha = 0.01;
 constexpr int kSamples = 200000;
 // pdf(sample) vs the returned pdf: same float tables, products of the same factors in another

@@ -15,7 +15,7 @@ namespace wavelit::wavelet {
 // One channel (0 = R, 1 = G, 2 = B).
 util::Result<SquareGrid> channelGrid(const util::ImageRGB& image, int channel,
                                      const std::string& file = {});
-// Rec.709 luminance 0.2126 R + 0.7152 G + 0.0722 B (DESIGN.md §6).
+// Rec.709 luminance 0.2126 R + 0.7152 G + 0.0722 B (architecture.md §6).
 util::Result<SquareGrid> luminanceGrid(const util::ImageRGB& image, const std::string& file = {});
 
 } // namespace wavelit::wavelet

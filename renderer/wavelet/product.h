@@ -1,7 +1,7 @@
 // Products of functions held as Haar coefficients: the scaling-coefficient pyramid of
 // F = G1 * G2 * ... * Gm (what hierarchical sampling needs, paper §3.4) and product integrals.
 //
-// Two paths that must agree (DESIGN.md §4: 1e-5 relative; in practice ~1e-15):
+// Two paths that must agree (architecture.md §4: 1e-5 relative; in practice ~1e-15):
 //  - dense: reconstruct every factor to texels, multiply, build the full pyramid. Haar functions
 //    are piecewise constant on the finest grid, so this is exact, and costs O(m 4^n).
 //  - sparse: a top-down descent over the union of the factors' coefficient trees. Each factor's
@@ -31,7 +31,7 @@ ScalingTree denseProduct(FactorList factors);
 ScalingTree sparseProduct(FactorList factors);
 ScalingTree sparseProductEq20(const SparseHaar& g, const SparseHaar& h);
 
-// Picks the faster path per case (DESIGN.md §4: keep both, pick per case): sparse when the
+// Picks the faster path per case (architecture.md §4: keep both, pick per case): sparse when the
 // factors' mean coefficient density is below kSparseCrossoverDensity. Measured crossovers
 // (docs/wavelet-benchmarks.md): ~35% at 64^2, ~15% at 256^2, none at 512^2 (sparse always
 // faster); 15% is right or within 1.3x everywhere.

@@ -1,5 +1,5 @@
 // RefinedSampler: a coarse product sampler refined below its resolution by a finer
-// single-factor pyramid (DESIGN.md §4.1, item 1).
+// single-factor pyramid (architecture.md §4.1, item 1).
 //
 // A 32^2 or 64^2 product of truncated factors cannot see a sun far smaller than its texels, and
 // jittering uniformly inside a product leaf costs hundreds of times the variance. So at a product

@@ -134,7 +134,7 @@ TEST(RefinedSampler, EstimatorIsUnbiasedAndBeatsTheUnrefinedProduct) {
     UniformMixture<HierarchicalSampler> coarseOnly(*product, 0.9);
     const double meanCoarse = estimate(coarseOnly, seCoarse);
     EXPECT_NEAR(meanCoarse, integral, kStandardErrors * seCoarse + 1e-12);
-    // DESIGN.md §4.1: refinement is what makes a sub-texel sun cheap (hundreds of times less
+    // architecture.md §4.1: refinement is what makes a sub-texel sun cheap (hundreds of times less
     // variance); assert only the direction, the figure goes to the report.
     EXPECT_LT(seRefined, seCoarse);
     std::printf("refined 32^2 x 512^2 sun: se %.3g vs unrefined %.3g (variance ratio %.0fx)\n",

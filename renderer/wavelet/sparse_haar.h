@@ -1,5 +1,5 @@
 // SparseHaar: the nonzero Haar coefficients of a function held as a quadtree of wavelet squares,
-// so a top-down descent touches only squares that carry detail (paper §3.2, DESIGN.md §4).
+// so a top-down descent touches only squares that carry detail (paper §3.2, architecture.md §4).
 //
 // A node exists for square (l, x, y) iff some kept detail lies at or below it; it stores that
 // square's three details (possibly zero when only descendants carry detail) and the index of each

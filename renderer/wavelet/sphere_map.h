@@ -1,4 +1,4 @@
-// Sphere parameterisations on 2^n x 2^n squares (DESIGN.md §3), behind one interface so tables,
+// Sphere parameterisations on 2^n x 2^n squares (architecture.md §3), behind one interface so tables,
 // products and samplers do not care which is used.
 //
 //  - OctahedralMap (default): Clarberg 2008's equal-area octahedral map, one square for the whole

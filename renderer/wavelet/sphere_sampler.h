@@ -1,5 +1,5 @@
 // SphereSampler: samples directions from a function tabulated on any SphereMap's faces, with an
-// exact solid-angle pdf. This is where the two parameterisations differ (DESIGN.md §3): the
+// exact solid-angle pdf. This is where the two parameterisations differ (architecture.md §3): the
 // octahedral map is one square with constant Jacobian 4 pi; the cube map is six squares whose
 // texels cover solid angles differing by 5.2x (centre vs corner). Each face's table is the
 // function times its texels' solid angle (so the square-domain distribution follows the function

@@ -1,4 +1,4 @@
-// Test and benchmark inputs for the wavelet core: the hard distributions DESIGN.md §8 names
+// Test and benchmark inputs for the wavelet core: the hard distributions architecture.md §8 names
 // (HDR sun, near-delta lobe, zero regions) as grids, plus a chi-square harness for any sampler
 // with sample(dvec2) -> SquareSample. Header-only; not used by production code.
 #pragma once

@@ -1,6 +1,6 @@
 // Direction samplers of the Vulkan tracer (issue 6; render/direction_sampler.h is the CPU side,
 // docs/wavelet-sampler.md the tables). Every kind returns the exact solid-angle pdf of the
-// mixture it draws from, and the tracer divides by it (DESIGN.md §4: never the paper's eq 7).
+// mixture it draws from, and the tracer divides by it (architecture.md §4: never the paper's eq 7).
 //
 //   uniform, cosine, bsdf   hemisphere / plugin sampling, as on the CPU
 //   env                     the environment's quadtree (env_table.glsl)
@@ -8,7 +8,7 @@
 //   wavelet                 per hit: the env factor of the reflection direction's bin (a
 //                           truncated Haar image over the bin's window, decoded to 2^m x 2^m)
 //                           times BRDF x cos (env-weighted over 2 x 2 sub-cells): the quadtree, built
-//                           dense in private memory (2^m <= 16, the dense path of DESIGN.md §4),
+//                           dense in private memory (2^m <= 16, the dense path of architecture.md §4),
 //                           refined below its leaves by the env's own quadtree (§4.1 item 1);
 //                           mixed with bsdf (defensive) and env with the CPU's share rule.
 //                           Lobes the env cannot resolve (policy BsdfLobe): bsdf + env.

@@ -1,4 +1,4 @@
-// Deterministic variance study of the direction samplers (issue 6; DESIGN.md §4.1's study):
+// Deterministic variance study of the direction samplers (issue 6; architecture.md §4.1's study):
 // one shading point (GGX, F0 0.9, view 45 degrees, normal +Y), no visibility, and for each
 // sampler the EXACT per-sample variance of the estimator g/p, g = luminance(f L cos), computed on
 // the environment's own texels (render/sampler_integrals.h): Var = integral g^2/p - I^2.
@@ -7,7 +7,7 @@
 // Prints markdown tables (relative variance Var / I^2 per sampler and roughness, the wavelet /
 // oracle ratio — our efficiency figure — and mis / wavelet), plus table build and per-point
 // construction times. docs/sampler-variance.md holds a run's output. Plain main: no timing is
-// asserted anywhere (DESIGN.md §8).
+// asserted anywhere (architecture.md §8).
 // --gpu adds the Vulkan tracer's `wavelet` and `oracle` (built differently from the CPU's): their
 // mixtures are built on the device at the same shading point and read back (gpu_sampler_probe.h),
 // and their exact variance computed on the same dense grid. (The GPU's other kinds are twins.)

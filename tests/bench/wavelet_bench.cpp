@@ -1,6 +1,6 @@
 // Wavelet core timings (issue 4): transforms, dense vs sparse products by coefficient density,
 // factor-tree updates vs rebuilds, sampling rate. Reported in docs/wavelet-benchmarks.md; never
-// asserted (machines are noisy, DESIGN.md §8).
+// asserted (machines are noisy, architecture.md §8).
 #include "wavelet/factor_product_tree.h"
 #include "wavelet/hierarchical_sampler.h"
 #include "wavelet/product.h"
