@@ -1,10 +1,12 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/cpu_path_tracer.cpp within noise.
-// Next-event estimation of the analytic lights with MIS (common/lights.glsl); directions are drawn
-// by the BSDF or, when the driver defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), by
-// the direction samplers of common/direction_sampler.glsl (issue 6), whose mixture pdf is also
-// what the light MIS weights use.
+// Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
+// defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
+// common/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
+// is then what the light MIS weights use) or is the technique of the next-event estimation of
+// DIRECT environment light (env, mis, wavelet, oracle; issue 20), whose continuation is the BSDF
+// sample, MIS-weighted against it (docs/estimator.md "Direction samplers").
 //
 // Buffers follow the layouts of renderer/scene/bvh.h and renderer/render/gpu_scene_data.h.
 #version 460
@@ -108,7 +110,7 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
                float uSelect, float u1, float u2, uint lightCount, float selection,
                uint triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-               , DirSampler ds
+               , DirSampler ds, bool dsDrawsContinuation
 #endif
 ) {
     Light l = analyticLights[min(uint(uSelect * float(lightCount)), lightCount - 1u)];
@@ -123,14 +125,38 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
     float t, b1, b2;
     if (bvhTrace(o, ls.wi, 0.0, ls.distance, true, triangleCount, tri, t, b1, b2))
         return vec3(0.0);
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-    float bsdfPdf = ls.delta ? 0.0 : dsPdf(ds, ls.wi);
-#else
+    // The pdf of the continuation's technique at wi (the vertex sampler's only when it draws it).
     float bsdfPdf = ls.delta ? 0.0 : brdfPdf(type, roughness, wo, wi);
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    if (!ls.delta && dsDrawsContinuation) bsdfPdf = dsPdf(ds, ls.wi);
 #endif
     float w = ls.delta ? 1.0 : powerHeuristic(selection * ls.pdf, bsdfPdf);
     return f * ls.value * (wi.z * w / (ls.pdf * selection));
 }
+
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+// CpuPathTracer::envNextEvent: direct env light from the vertex's NEE technique `ds` (the env for
+// mis), shadow ray, MIS against the BSDF continuation (env: weight 1).
+vec3 envNextEvent(DirSampler ds, uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
+                  vec3 ng, vec3 o, float u1, float u2, float u3, bool envAlone,
+                  uint triangleCount) {
+    vec3 wiWorld;
+    float pdf;
+    if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) return vec3(0.0);
+    if (dot(wiWorld, ng) <= 0.0) return vec3(0.0);
+    vec3 wi = frameToLocal(frame, wiWorld);
+    if (wi.z <= 0.0) return vec3(0.0);
+    vec3 f = brdfEval(type, baseColor, roughness, wo, wi);
+    if (all(equal(f, vec3(0.0)))) return vec3(0.0);
+    uint tri;
+    float t, b1, b2;
+    if (bvhTrace(o, wiWorld, 0.0, kFloatMax, true, triangleCount, tri, t, b1, b2))
+        return vec3(0.0);
+    vec3 Le = envRadiance(wiWorld);
+    float w = envAlone ? 1.0 : powerHeuristic(pdf, brdfPdf(type, roughness, wo, wi));
+    return f * Le * (wi.z * w / pdf);
+}
+#endif
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -152,6 +178,18 @@ void main() {
     float selection = params.lightInfo.x;
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float scatterPdfOfDir = 0.0; // solid-angle pdf with which the last vertex drew `dir`
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    uint kind = params.samplerInfo.x;
+    bool lit = params.samplerInfo.y != 0u;
+    // The kinds whose vertex sampler draws the continuation (else it is the env NEE technique).
+    bool continuationFromSampler = kind == kSamplerUniform || kind == kSamplerCosine;
+    bool envNee = kind == kSamplerEnv || kind == kSamplerMis || kind == kSamplerWavelet ||
+                  kind == kSamplerOracle;
+    // The vertex that drew `dir` estimated direct env light by NEE with `ds` (still its sampler:
+    // set up per vertex, and an escaping ray sets up none).
+    bool neeOfDir = false;
+    DirSampler ds;
+#endif
     for (uint depth = 0u;; ++depth) {
         uint tri;
         float t, b1, b2;
@@ -161,7 +199,12 @@ void main() {
             L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
                                          lightCount, selection);
         if (!found) {
-            L += beta * envRadiance(dir);
+            float w = 1.0;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+            if (neeOfDir)
+                w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, dsPdf(ds, dir));
+#endif
+            L += beta * (w * envRadiance(dir));
             break;
         }
         BvhTriangle T = bvhTriangles[tri];
@@ -187,14 +230,16 @@ void main() {
         vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         SamplerGlobals globals;
-        globals.kind = params.samplerInfo.x;
+        globals.kind = kind == kSamplerMis ? kSamplerEnv : kind; // mis's NEE: the env alone
         globals.lit = params.samplerInfo.y != 0u;
         globals.tailOffset = params.samplerInfo.z;
         globals.envLevel = int(params.samplerInfo.w);
         globals.envMean = params.samplerEnv.x;
         globals.cosSinYaw = params.envRotation.xy;
-        DirSampler ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
-                                mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
+        bool vertexNee = envNee && lit;
+        if (continuationFromSampler || vertexNee)
+            ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
+                         mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
 #endif
         if (lightCount > 0u) {
             float uSelect = pcgFloat(rng);
@@ -204,34 +249,53 @@ void main() {
                                   frame, wo, ng, next, uSelect, ul1, ul2, lightCount, selection,
                                   triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-                                  , ds
+                                  , ds, continuationFromSampler
 #endif
             );
         }
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+        if (envNee) {
+            float ue1 = pcgFloat(rng);
+            float ue2 = pcgFloat(rng);
+            float ue3 = pcgFloat(rng);
+            if (vertexNee)
+                L += beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
+                                         mat.baseColorRoughness.a, frame, wo, ng, next, ue1, ue2,
+                                         ue3, kind == kSamplerEnv, triangleCount);
+        }
+#endif
 
         float u1 = pcgFloat(rng);
         float u2 = pcgFloat(rng);
         vec3 wiLocal, f;
         float pdf;
+        vec3 wi;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-        // The mixture's draw; the estimator divides by its pdf (DESIGN.md §4).
-        float u3 = pcgFloat(rng);
-        vec3 wiWorld;
-        if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;
-        wiLocal = frameToLocal(frame, wiWorld);
-        if (wiLocal.z <= 0.0) break;
-        f = brdfEval(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo, wiLocal);
-        vec3 wi = wiWorld;
-#else
-        if (!brdfSample(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo, u1,
-                        u2, wiLocal, f, pdf) ||
-            pdf <= 0.0)
-            break;
-        vec3 wi = frameToWorld(frame, wiLocal);
+        if (continuationFromSampler) {
+            // The mixture's draw; the estimator divides by its pdf (DESIGN.md §4).
+            float u3 = pcgFloat(rng);
+            vec3 wiWorld;
+            if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;
+            wiLocal = frameToLocal(frame, wiWorld);
+            if (wiLocal.z <= 0.0) break;
+            f = brdfEval(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo,
+                         wiLocal);
+            wi = wiWorld;
+        } else
 #endif
+        {
+            if (!brdfSample(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo,
+                            u1, u2, wiLocal, f, pdf) ||
+                pdf <= 0.0)
+                break;
+            wi = frameToWorld(frame, wiLocal);
+        }
         if (dot(wi, ng) <= 0.0) break; // below the true surface: light leak otherwise
         beta *= f * (wiLocal.z / pdf);
         scatterPdfOfDir = pdf;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+        neeOfDir = vertexNee;
+#endif
 
         if (int(depth) >= kRussianRouletteDepth) {
             float q = max(kMinContinueProbability, 1.0 - max(beta.r, max(beta.g, beta.b)));

@@ -28,6 +28,13 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // atomic fetch.
 constexpr int kTileSize = 16;
 
+// docs/estimator.md: power(a, b) = a > 0 ? 1 / (1 + (b/a)^2) : 0 (lights.glsl's twin).
+float powerWeight(float a, float b) {
+    if (!(a > 0.0f)) return 0.0f;
+    const float r = b / a;
+    return 1.0f / (1.0f + r * r);
+}
+
 } // namespace
 
 util::Result<std::unique_ptr<CpuPathTracer>>
@@ -135,6 +142,12 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
     glm::vec3 dir = m_camera.direction(x, y, jx, jy);
     glm::vec3 L(0.0f), beta(1.0f);
     float scatterPdfOfDir = 0.0f; // solid-angle pdf with which the last vertex drew `dir`
+    const SamplerKind kind = m_options.sampler;
+    const bool envNee = samplerHasEnvNee(kind);
+    const bool lit = m_samplerTables && m_samplerTables->environment().hasLight();
+    // The env NEE technique of the vertex that drew `dir` (issue 20), kept so that env light the
+    // continuation finds is MIS-weighted against it; empty: that vertex did no env NEE.
+    std::optional<DirectionSampler> neeOfDir;
     if (record) {
         *record = PathRecord{};
         record->x = x;
@@ -166,12 +179,19 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
                      betaBeforeDir, beta * e);
         }
         if (!found) {
+            // Direct env light was estimated at the previous vertex by NEE: weight the
+            // continuation's find against it (`env`: NEE alone, so 0).
+            float w = 1.0f, neePdf = 0.0f;
+            if (neeOfDir) {
+                neePdf = neeOfDir->pdf(dir);
+                w = kind == SamplerKind::Env ? 0.0f : powerWeight(scatterPdfOfDir, neePdf);
+            }
             const glm::vec3 e = m_environment.radiance(dir);
-            L += beta * e;
+            L += beta * (w * e);
             if (record)
                 addEvent(from, "env-escape", techniqueOfDir, scatterPdfOfDir,
-                         {{"continuation", scatterPdfOfDir}}, 1.0, fcosOfDir, e, betaBeforeDir,
-                         beta * e);
+                         {{"continuation", scatterPdfOfDir}, {"nee", neePdf}}, w, fcosOfDir, e,
+                         betaBeforeDir, beta * (w * e));
             break;
         }
         const SurfacePoint sp = surfaceAt(*m_bvh, hit, origin, dir);
@@ -179,13 +199,6 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
         const glm::vec3& ng = sp.geometric;
         const util::Frame frame = util::Frame::fromNormal(sp.shading);
         const glm::vec3 wo = frame.toLocal(-dir);
-        // The vertex's direction sampler (not `bsdf`): drawing and MIS weights both use it.
-        std::optional<DirectionSampler> ds;
-        if (m_samplerTables && mat.samplerIndex >= 0)
-            ds.emplace(*m_samplerTables, m_options.sampler,
-                       ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
-        const DirectionSampler* sampler = ds ? &*ds : nullptr;
-
         L += beta * mat.emission;
         addEvent(from, "emission", techniqueOfDir, scatterPdfOfDir, {}, 1.0, fcosOfDir,
                  mat.emission, betaBeforeDir, beta * mat.emission);
@@ -205,6 +218,17 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             if (vertex) vertex->end = "bounce limit";
             break;
         }
+        // The vertex's direction sampler: for uniform/cosine it draws the continuation (and its
+        // pdf weights the analytic lights); for env/mis/wavelet/oracle it is the env NEE
+        // technique (only over an env with light) and the continuation is the plugin's BSDF
+        // sample. `bsdf`: none.
+        std::optional<DirectionSampler> ds;
+        if (m_samplerTables && mat.samplerIndex >= 0 &&
+            (continuationFromSampler(kind) || (envNee && lit)))
+            ds.emplace(*m_samplerTables, vertexSamplerKind(kind),
+                       ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
+        const DirectionSampler* sampler = ds && continuationFromSampler(kind) ? &*ds : nullptr;
+        const DirectionSampler* neeSampler = ds && envNee ? &*ds : nullptr;
 
         // Lights are sampled from the point the continuation ray leaves from, so both MIS
         // strategies evaluate their pdfs at the same point.
@@ -219,10 +243,25 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             addEvent(depth, "light-nee", "light", 0.0, {}, 1.0, glm::vec3(1.0f), e, beta, beta * e);
         }
 
+        if (envNee) {
+            // Drawn for every scattering vertex of these kinds, used where the vertex has an env
+            // NEE technique (docs/estimator.md "Random numbers").
+            const float ue1 = rng.nextFloat();
+            const float ue2 = rng.nextFloat();
+            const float ue3 = rng.nextFloat();
+            if (neeSampler) {
+                const glm::vec3 e =
+                    envNextEvent(mat, frame, *neeSampler, wo, ng, next, ue1, ue2, ue3,
+                                 vertex ? &record->events : nullptr, depth, beta);
+                L += beta * e;
+            }
+        }
+
         const float u1 = rng.nextFloat();
         const float u2 = rng.nextFloat();
-        // The technique choice of a DirectionSampler mixture: drawn only when one is used, so
-        // `bsdf` keeps the draw order the Vulkan tracer shares (docs/estimator.md).
+        // The technique choice of a DirectionSampler mixture: drawn only when one draws the
+        // continuation (uniform, cosine), the draw order the Vulkan tracer shares
+        // (docs/estimator.md).
         const float u3 = sampler ? rng.nextFloat() : 0.0f;
         const ScatterDraw s = sampleScatter(mat, frame, sampler, wo, u1, u2, u3);
         if (!s.valid || !(s.pdf > 0.0f) || s.wi.z <= 0.0f) {
@@ -263,6 +302,10 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             beta /= 1.0f - q;
         }
         if (vertex) vertex->throughputOut = beta;
+        if (neeSampler)
+            neeOfDir = std::move(ds);
+        else
+            neeOfDir.reset();
 
         origin = next;
         dir = wi;
@@ -320,6 +363,49 @@ glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Fram
     const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, frame, ds, wo, wi);
     const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy);
     return f * ls.value * (wi.z * w / (ls.pdf * m_lights.selectionProbability()));
+}
+
+glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
+                                      const DirectionSampler& nee, const glm::vec3& wo,
+                                      const glm::vec3& ng, const glm::vec3& origin, float u1,
+                                      float u2, float u3, std::vector<PathEvent>* events,
+                                      int vertex, const glm::vec3& beta) const {
+    const DirectionSample d = nee.sample(u1, u2, u3);
+    if (!d.valid) return glm::vec3(0.0f);
+    // The continuation ends paths below the true surface or the shading hemisphere: NEE agrees.
+    if (glm::dot(d.wi, ng) <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 wi = frame.toLocal(d.wi);
+    if (wi.z <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 f = mat.brdf->eval(mat.params, wo, wi);
+    if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    if (scene::occluded(*m_bvh, origin, d.wi, 0.0f, std::numeric_limits<float>::max()))
+        return glm::vec3(0.0f);
+    const glm::vec3 Le = m_environment.radiance(d.wi);
+    // `env`: light sampling alone; the others: power heuristic against the BSDF continuation.
+    const float bsdfPdf =
+        m_options.sampler == SamplerKind::Env ? 0.0f : mat.brdf->pdf(mat.params, wo, wi);
+    const float w = m_options.sampler == SamplerKind::Env ? 1.0f : powerWeight(d.pdf, bsdfPdf);
+    const glm::vec3 value = f * Le * (wi.z * w / d.pdf);
+    if (events && value != glm::vec3(0.0f)) {
+        PathEvent e;
+        e.vertex = vertex;
+        e.kind = "env-nee";
+        e.technique = d.technique;
+        e.pdf = d.pdf;
+        for (const ComponentPdf& c : nee.componentPdfs(d.wi)) {
+            e.misPdfs.push_back({std::string(c.technique), c.pdf});
+            e.misPdfs.push_back({"share:" + std::string(c.technique), c.weight});
+        }
+        e.misPdfs.push_back({"nee", d.pdf});
+        e.misPdfs.push_back({"continuation", bsdfPdf});
+        e.weight = w;
+        e.fcos = f * wi.z;
+        e.radiance = Le;
+        e.throughput = beta;
+        e.contribution = beta * value;
+        events->push_back(std::move(e));
+    }
+    return value;
 }
 
 util::Status CpuPathTracer::renderPass() {

@@ -121,6 +121,17 @@ private:
                         const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
                         float uSelect, float u1, float u2) const;
 
+    // Next-event estimation of DIRECT environment light (issue 20; env, mis, wavelet, oracle):
+    // a direction from the vertex's NEE technique `nee` with (u1, u2, u3), a shadow ray, the env's
+    // radiance, MIS-weighted against the BSDF continuation (`env`: weight 1). Radiance toward the
+    // viewer before the path throughput; with `events`, also records the term (beta: the
+    // throughput, for the record only).
+    glm::vec3 envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
+                           const DirectionSampler& nee, const glm::vec3& wo, const glm::vec3& ng,
+                           const glm::vec3& origin, float u1, float u2, float u3,
+                           std::vector<PathEvent>* events, int vertex,
+                           const glm::vec3& beta) const;
+
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
     RenderOptions m_options;

@@ -57,6 +57,19 @@ std::vector<SamplerKind> allSamplerKinds() {
             SamplerKind::Mis,     SamplerKind::Wavelet, SamplerKind::Oracle};
 }
 
+bool samplerHasEnvNee(SamplerKind kind) {
+    return kind == SamplerKind::Env || kind == SamplerKind::Mis || kind == SamplerKind::Wavelet ||
+           kind == SamplerKind::Oracle;
+}
+
+bool continuationFromSampler(SamplerKind kind) {
+    return kind == SamplerKind::Uniform || kind == SamplerKind::Cosine;
+}
+
+SamplerKind vertexSamplerKind(SamplerKind kind) {
+    return kind == SamplerKind::Mis ? SamplerKind::Env : kind;
+}
+
 std::shared_ptr<const DirectionSamplerTables>
 DirectionSamplerTables::build(const scene::Environment& env, std::vector<SamplerMaterial> materials,
                               SamplerKind kind, const SamplerEnvironmentOptions& envOptions) {

@@ -55,6 +55,18 @@ namespace wavelit::render {
 // SamplerKind, samplerKindName and parseSamplerKind live in render_options.h (the CLI's flag).
 std::vector<SamplerKind> allSamplerKinds();
 
+// What each kind means in the path tracers (issue 20; docs/estimator.md "Direction samplers"):
+// `uniform`, `cosine` and `bsdf` draw the path's continuation and nothing else; `env`, `mis`,
+// `wavelet` and `oracle` estimate DIRECT environment light by next-event estimation (a direction
+// from this kind's vertex sampler, a shadow ray) and continue the path by BSDF sampling; `mis`
+// MIS-weights the two (power heuristic), `env` counts env light found by the continuation as 0
+// (light sampling alone), `wavelet` and `oracle` MIS-weight their product mixture against the BSDF.
+bool samplerHasEnvNee(SamplerKind kind);
+// The continuation is drawn by a DirectionSampler (uniform, cosine), not by the plugin.
+bool continuationFromSampler(SamplerKind kind);
+// The kind a vertex's DirectionSampler is built with: `mis`'s NEE draws from `env` alone.
+SamplerKind vertexSamplerKind(SamplerKind kind);
+
 // A material as the samplers need it (scene::Material resolved to its plugin).
 struct SamplerMaterial {
     std::string name;
