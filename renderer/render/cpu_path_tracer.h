@@ -7,9 +7,11 @@
 //
 // Analytic lights (point, sphere, rect, spot, sun) get next-event estimation at every hit, MIS'd
 // with BSDF sampling (light_set.h; docs/estimator.md "Analytic lights"). Direction samplers
-// (RenderOptions::sampler, issue 6): `bsdf` draws from the material's plugin with (u1, u2), the
-// draw order the Vulkan tracer shares; every other kind (uniform, cosine, env, mis, wavelet,
-// oracle) draws from a DirectionSampler (direction_sampler.h) with (u1, u2, u3), its tables held
+// (RenderOptions::sampler, issues 6 and 20): `bsdf`, `env`, `mis`, `wavelet` and `oracle` draw
+// the continuation from the material's plugin with (u1, u2), `uniform` and `cosine` from a
+// DirectionSampler with (u1, u2, u3); `env`, `mis`, `wavelet` and `oracle` also estimate direct
+// env light by next-event estimation from their DirectionSampler (direction_sampler.h,
+// docs/estimator.md "Direction samplers"), in the draw order the Vulkan tracer shares; tables held
 // by a SamplerTablesCache: built at create() for the materials the scene's objects use, and on
 // setScene() rebuilt only where the new scene invalidates them (an object move rebuilds none,
 // DESIGN.md §5). sampleScatter/scatterPdf are the one

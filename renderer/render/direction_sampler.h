@@ -6,7 +6,9 @@
 //   bsdf     the material's BRDF sampler (GGX: visible normals)   the plugin's pdf
 //   env      the environment alone, hierarchical over its octahedral map (rotation applied)
 //   mis      one-sample MIS of bsdf and env, 1/2 each: pdf = (p_bsdf + p_env) / 2, which is the
-//            balance heuristic in the one-sample model (f L cos / sum c_i p_i)
+//            balance heuristic in the one-sample model (f L cos / sum c_i p_i). The path tracers
+//            do not use this mixture: their `mis` is env NEE + BSDF continuation, MIS-weighted
+//            (samplerHasEnvNee below; docs/estimator.md "Direction samplers")
 //   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
 //            refined below its leaves by BRDF-weighted env levels, then the env pyramid,
 //            env_product_sampler.h) for the lobe, plus bsdf (the policy's share, 0.03,
