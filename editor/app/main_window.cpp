@@ -1,5 +1,6 @@
 #include "app/main_window.h"
 
+#include "app/autosave_controller.h"
 #include "app/editor_actions.h"
 #include "app/error_reporter.h"
 #include "app/scene_document.h"
@@ -34,7 +35,8 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
       m_render(new RenderController(renderSettings, this)), m_viewport(new ViewportWidget(this)),
       m_outline(new OutlinePanel(this)), m_properties(new PropertyPanel(this)),
       m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document, m_errors)),
-      m_cameraHandler(new CameraOrbitHandler(this)) {
+      m_cameraHandler(new CameraOrbitHandler(this)),
+      m_autosave(new AutosaveController(m_document, m_errors, this)) {
     setObjectName("mainWindow");
     updateTitle();
     setCentralWidget(m_viewport);
@@ -54,6 +56,7 @@ MainWindow::~MainWindow() { delete m_render; }
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (m_closeApproved || !m_document->isModified()) {
         m_render->cancel(); // no new pass starts; the destructor joins the render thread
+        if (m_closeApproved) m_autosave->discardRecovery(); // saved or discarded on purpose
         event->accept();
         return;
     }
@@ -122,6 +125,7 @@ void MainWindow::wireRendering() {
         m_status->showFrame(frame);
     });
     connect(m_render, &RenderController::failed, this, [this](const QString& message) {
+        m_autosave->autosaveNow(); // a failing renderer may be a dying process: keep the edits
         m_status->showState(tr("render failed"));
         m_errors->report(tr("Render"), message);
     });

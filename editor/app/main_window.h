@@ -10,6 +10,7 @@
 
 namespace wavelit::editor {
 
+class AutosaveController;
 class CameraOrbitHandler;
 class EditorActions;
 class ErrorReporter;
@@ -33,6 +34,7 @@ public:
     ErrorReporter* errors() const { return m_errors; }
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
+    AutosaveController* autosave() const { return m_autosave; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -53,6 +55,7 @@ private:
     RenderStatusLabel* m_status;
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;
+    AutosaveController* m_autosave;
     bool m_closeApproved = false;
 };
 

@@ -45,7 +45,7 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent), m_undo(new QUnd
 
 SceneDocument::~SceneDocument() = default;
 
-bool SceneDocument::isModified() const { return m_scene && !m_undo->isClean(); }
+bool SceneDocument::isModified() const { return m_scene && (m_recovered || !m_undo->isClean()); }
 
 bool SceneDocument::lightingEdited() const {
     return m_scene && !m_scene->lightingPath.empty() &&
@@ -92,7 +92,16 @@ void SceneDocument::onLoaded() {
                               .arg(QDir::toNativeSeparators(result->path), result->repairs.join('\n')));
 }
 
+void SceneDocument::restoreRecovered(std::shared_ptr<const scene::Scene> scene, const QString& path,
+                                     scene::LightingSetup savedLighting) {
+    setScene(std::move(scene), path);
+    m_savedLighting = std::move(savedLighting);
+    m_recovered = true;
+    emit modifiedChanged(true);
+}
+
 void SceneDocument::setScene(std::shared_ptr<const scene::Scene> scene, const QString& path) {
+    m_recovered = false;
     m_undo->clear();
     m_scene = std::move(scene);
     m_savedLighting = m_scene ? m_scene->lighting : scene::LightingSetup{};
@@ -165,7 +174,10 @@ void SceneDocument::onSaved() {
     if (plan.lighting) m_savedLighting = *plan.lighting;
     else if (m_scene->lightingPath.empty()) m_savedLighting = m_scene->lighting;
     m_path = QString::fromStdString(plan.scenePath);
-    if (m_undo->index() == m_savingUndoIndex) m_undo->setClean();
+    if (m_undo->index() == m_savingUndoIndex) {
+        m_recovered = false;
+        m_undo->setClean();
+    }
     emit saved(m_path);
     emit modifiedChanged(isModified());
 }

@@ -54,6 +54,10 @@ public:
     void saveAs(const QString& path, std::optional<LightingSave> choice = std::nullopt);
     // Replaces the document synchronously (tests, scripts that build scenes).
     void setScene(std::shared_ptr<const scene::Scene> scene, const QString& path);
+    // Replaces the document with a recovered state (app/recovery_store.h): modified until saved;
+    // `savedLighting` is the referenced setup as its file holds it.
+    void restoreRecovered(std::shared_ptr<const scene::Scene> scene, const QString& path,
+                          scene::LightingSetup savedLighting);
 
     // Checks one edit against the registry and, if valid, pushes it onto the undo stack (which
     // applies it). Opening a scene clears the stack.
@@ -92,6 +96,7 @@ private:
     QFutureWatcher<QString>* m_saving = nullptr; // empty string = success
     std::optional<SavePlan> m_savingPlan;
     int m_savingUndoIndex = 0; // the undo index the saved snapshot corresponds to
+    bool m_recovered = false;  // restored from a recovery file and not saved since
 };
 
 } // namespace wavelit::editor

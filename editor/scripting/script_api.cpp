@@ -1,5 +1,6 @@
 #include "scripting/script_api.h"
 
+#include "app/autosave_controller.h"
 #include "app/editor_actions.h"
 #include "app/error_reporter.h"
 #include "app/main_window.h"
@@ -205,6 +206,31 @@ bool AppApi::answerPrompts(const QString& answer) {
 }
 
 bool AppApi::isModified() const { return m_window->document()->isModified(); }
+
+bool AppApi::autosave() {
+    AutosaveController* autosave = m_window->autosave();
+    waitUntil([&] { return !autosave->isWriting(); }, QDeadlineTimer::Forever); // one in flight
+    if (!autosave->autosaveNow()) return false;
+    waitUntil([&] { return !autosave->isWriting(); }, QDeadlineTimer::Forever);
+    return !recoveryFile().isEmpty();
+}
+
+QString AppApi::recoveryFile() const {
+    const auto recovery = m_window->autosave()->store().find(m_window->document()->path());
+    return recovery ? recovery->recoveryFile : QString();
+}
+
+bool AppApi::answerRecovery(const QString& answer) {
+    std::optional<RecoveryAnswer> parsed;
+    if (answer == "recover") parsed = RecoveryAnswer::Recover;
+    else if (answer == "discard") parsed = RecoveryAnswer::Discard;
+    else if (answer == "keep") parsed = RecoveryAnswer::Keep;
+    else if (!answer.isEmpty())
+        return fail(QStringLiteral("answerRecovery: expected \"recover\", \"discard\", \"keep\" or \"\", not \"%1\"")
+                        .arg(answer));
+    m_window->autosave()->setScriptedAnswer(parsed);
+    return true;
+}
 
 QString AppApi::windowTitle() const {
     QString title = m_window->windowTitle();

@@ -38,6 +38,13 @@ public:
     // (then, while a script runs, prompts answer "cancel").
     Q_INVOKABLE bool answerPrompts(const QString& answer);
     Q_INVOKABLE bool isModified() const;
+    // Writes the open document's recovery file now and waits (false: nothing unsaved to write).
+    Q_INVOKABLE bool autosave();
+    // The recovery file of the open document if one exists (newer than the scene file), else "".
+    Q_INVOKABLE QString recoveryFile() const;
+    // Answers every later "Recover unsaved changes?" offer: "recover", "discard" or "keep"; ""
+    // clears (then, while a script runs, recoveries are kept).
+    Q_INVOKABLE bool answerRecovery(const QString& answer);
     // The window title as shown, with "*" when the document has unsaved changes.
     Q_INVOKABLE QString windowTitle() const;
     // A screenshot of the whole editor window (PNG), for documentation and bug reports.
