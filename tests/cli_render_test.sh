@@ -65,6 +65,16 @@ for sampler in uniform cosine bsdf env mis wavelet oracle; do
 done
 expect 0 "" -- render "$scene" -o "$tmp/s_oracle.exr" --width 4 --height 4 --spp 1 --sampler oracle --device cpu
 
+# The outlier tracer (issue 20): the N largest samples with their re-traced paths, on either device.
+for device in cpu vulkan; do
+    expect 0 "" -- render "$scene" -o "$tmp/o_$device.exr" --width 16 --height 16 --spp 4 --sampler mis \
+        --device "$device" --trace-outliers 3 --outliers "$tmp/o_$device.json"
+    [ "$(grep -c '"rank":' "$tmp/o_$device.json")" -eq 3 ] || fail "--trace-outliers 3 on $device: $(head -c 400 "$tmp/o_$device.json")"
+    grep -q '"vertices": \[' "$tmp/o_$device.json" || fail "outliers on $device lack their paths"
+done
+expect 2 "--outliers" -- render "$scene" -o "$tmp/x.exr" --trace-outliers 3
+expect 2 "--trace-outliers" -- render "$scene" -o "$tmp/x.exr" --trace-outliers 0 --outliers "$tmp/x.json"
+
 # Bad input: exit 1 naming the file.
 expect 1 "missing.wlscene" -- render "$tmp/missing.wlscene" -o "$tmp/x.exr" "${small[@]}"
 echo '{ "format": "wavelit-scene", "version": 1, ' >"$tmp/corrupt.wlscene"
