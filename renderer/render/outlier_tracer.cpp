@@ -49,12 +49,13 @@ OutlierMonitor::OutlierMonitor(int width, int height, int count)
 
 void OutlierMonitor::addPass(const util::ImageRGB& mean) {
     const int pass = m_passes++;
-    // The image's mean luminance floors the pixel means: a first sample in a black pixel is not
-    // infinitely far out.
+    // The image's mean luminance / (pass + 1) floors the pixel means: a running mean of a few
+    // samples says little (a first sample in a black pixel is not infinitely far out), and a
+    // genuinely dark pixel ranks by its own mean once it has had enough samples.
     double imageMean = 0.0;
     for (const glm::vec3& p : mean.pixels) imageMean += util::luminance(p);
     imageMean /= double(std::max<size_t>(1, mean.pixels.size()));
-    const double floor = std::max(1e-2 * imageMean, 1e-12);
+    const double floor = std::max(imageMean / double(pass + 1), 1e-12);
     for (int y = 0; y < m_height; ++y)
         for (int x = 0; x < m_width; ++x) {
             const size_t i = size_t(y) * size_t(m_width) + size_t(x);
@@ -64,10 +65,8 @@ void OutlierMonitor::addPass(const util::ImageRGB& mean) {
                 pass > 0 ? double(util::luminance(glm::vec3(m_sum[i] / double(pass)))) : 0.0;
             m_sum[i] = total;
             if (m_count == 0) continue;
-            // A first pass has no running mean yet: its samples are ranked against the image's.
             OutlierSample s{x, y, pass, value, before,
-                            double(util::luminance(value)) /
-                                std::max(pass > 0 ? before : imageMean, floor)};
+                            double(util::luminance(value)) / std::max(before, floor)};
             if (int(m_heap.size()) < m_count) {
                 m_heap.push_back(s);
                 std::push_heap(m_heap.begin(), m_heap.end(), heapLess);

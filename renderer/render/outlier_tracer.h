@@ -27,7 +27,7 @@ struct OutlierSample {
     int x = 0, y = 0, pass = 0;
     glm::vec3 value{0.0f};     // the sample, from the running sum's increment
     double pixelMean = 0.0;    // luminance of the pixel's mean over the passes before it
-    double ratio = 0.0;        // luminance(value) / pixelMean (floored, see .cpp)
+    double ratio = 0.0;        // luminance(value) / max(pixelMean, image mean / (pass + 1))
 };
 
 class OutlierMonitor {
