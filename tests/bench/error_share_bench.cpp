@@ -2,7 +2,8 @@
 //   error_share_bench REFERENCE.exr IMAGE.exr [SPP]
 // prints relRMSE = RMS(lum(image) - lum(reference)) / mean(lum(reference)), the share of the
 // squared error held by the top 0.1% of pixels (at least one), and relRMSE^2 x SPP (the per-sample
-// figure: constant in SPP for an unbiased estimator while the reference's own error is small).
+// figure: constant in SPP for an unbiased estimator while the reference's own error is small),
+// and the ratio of the image's mean luminance to the reference's.
 #include "scene/image_io.h"
 #include "util/image.h"
 
@@ -33,8 +34,9 @@ int main(int argc, char** argv) {
     }
     const size_t n = r.pixels.size();
     std::vector<double> sq(n);
-    double mean = 0.0, total = 0.0;
+    double mean = 0.0, total = 0.0, imageMean = 0.0;
     for (size_t i = 0; i < n; ++i) {
+        imageMean += util::luminance(m.pixels[i]);
         const double e = double(util::luminance(m.pixels[i])) - double(util::luminance(r.pixels[i]));
         sq[i] = e * e;
         total += sq[i];
@@ -47,7 +49,10 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < top; ++i) topSum += sq[i];
     const double relRmse = std::sqrt(total / double(n)) / mean;
     const double spp = argc > 3 ? std::atof(argv[3]) : 0.0;
-    std::printf("relRMSE %.4g top0.1%%share %.3f relRMSE2xspp %.4g (pixels %zu, top %zu)\n",
-                relRmse, total > 0 ? topSum / total : 0.0, relRmse * relRmse * spp, n, top);
+    imageMean /= double(n);
+    std::printf("relRMSE %.4g top0.1%%share %.3f relRMSE2xspp %.4g mean/ref %.4f (pixels %zu, "
+                "top %zu)\n",
+                relRmse, total > 0 ? topSum / total : 0.0, relRmse * relRmse * spp,
+                imageMean / mean, n, top);
     return 0;
 }
