@@ -12,6 +12,7 @@ PACKAGES=(
     libassimp-dev libopenexr-dev libimath-dev
     libglm-dev nlohmann-json3-dev
     libgtest-dev libgmock-dev libbenchmark-dev
+    clang libclang-rt-14-dev
     xvfb xauth libxkbcommon-x11-0 libxcb-cursor0 libxcb-icccm4 libxcb-keysyms1
     libxcb-shape0 libxcb-render-util0 libxcb-image0 libxcb-xinerama0
 )

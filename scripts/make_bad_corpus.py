@@ -148,6 +148,14 @@ def main():
     files["some_zero_area.obj"] = obj(["v 0 0 0", "v 1 0 0", "v 0 0 -1", "v 2 0 0", "f 1 2 3", "f 1 2 4"])
     files["no_faces.obj"] = obj(["v 0 0 0", "v 1 0 0", "v 0 0 -1"])
     files["garbage.ply"] = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1 2\n"
+    # A PLY header without its end_header line (fuzz_ply finding: Assimp 5.2 never returned on it).
+    files["no_end_header.ply"] = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+    # A face list with a stray "[" (fuzz_ply finding: Assimp's triangulation asserted on the mesh it made).
+    files["stray_bracket.ply"] = (b"ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                  b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                  b"-1 0 -1\n1 0 -1\n1 0 1\n-1 0 1\n[ 0 3 2 1\n")
+    # A GLB stating a 4 GB JSON chunk in 29 bytes (fuzz_gltf finding: Assimp allocated it).
+    files["huge_chunk.glb"] = b"glTF" + struct.pack("<III", 2, 4096, 0xF7000010) + b"JSON{bufferVi"
     files["truncated.glb"] = b"glTF" + struct.pack("<II", 2, 4096) + b"\x10\x00\x00\x00JSON{\"asset\":"
 
     # --- scenes ---
@@ -189,6 +197,11 @@ def main():
     files["negative_intensity.wllight"] = js(lighting(lights=[{"id": 1, "name": "p", "type": "point", "intensity": -5}]))
     files["env_with_nan_texels.wllight"] = js(lighting(environment={"map": "nan_texels.exr"}))
     files["unknown_key.wllight"] = js(lighting(lights=[{"id": 1, "name": "p", "type": "point", "intensty": 5}]))
+    # A key the light's type does not use (fuzz_lighting finding): saving would drop it, so it fails the load.
+    files["inapplicable_key.wllight"] = js(lighting(lights=[{"id": 1, "name": "r", "type": "rect", "coneInner": 15}]))
+    # A hand-edited number no double holds (issue 15): the JSON parser's overflow must be a load error.
+    files["number_overflow.wllight"] = js(lighting(lights=[{"id": 1, "name": "p", "type": "point", "intensity": 5}])).replace(
+        '"intensity": 5', '"intensity": 1e999')
 
     for name, data in sorted(files.items()):
         mode = "wb" if isinstance(data, bytes) else "w"

@@ -1,6 +1,7 @@
 #include "scene/image_io.h"
 
 #include "scene/atomic_file.h"
+#include "scene/load_guard.h"
 #include "scene/radiance_hdr.h"
 #include "util/path_util.h"
 
@@ -121,7 +122,9 @@ float linearToSrgb(float v) {
 
 } // namespace
 
-util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOptions& options) {
+namespace {
+
+util::Result<LoadedImage> loadImageUnguarded(const std::string& path, const ImageLoadOptions& options) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         return makeError(ErrorKind::NotFound, path, "no such image file");
@@ -137,6 +140,12 @@ util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOpti
     LoadedImage loaded{std::move(image).value(), {}};
     if (auto s = sanitize(loaded, path, options.sanitize); !s) return s.error();
     return loaded;
+}
+
+} // namespace
+
+util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOptions& options) {
+    return guardLoad<LoadedImage>(path, [&] { return loadImageUnguarded(path, options); });
 }
 
 util::Status writeExr(const std::string& path, const util::ImageRGB& image) {

@@ -1,5 +1,7 @@
 #include "scene/mesh_loader.h"
 
+#include "scene/load_guard.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -8,6 +10,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 namespace wavelit::scene {
 
@@ -44,6 +48,88 @@ std::vector<glm::vec3> smoothNormals(const TriangleMesh& m) {
     return n;
 }
 
+// Assimp 5.2's PLY reader (what Debian 12 ships) never returns on a header that lacks its
+// "end_header" line: at the end of the file it reads empty lines forever (fuzz_ply finding). A file
+// Assimp would read as PLY (it starts with "ply" in any case, whatever its extension) is refused
+// here unless a line starts with the token "end_header", as Assimp's header parser looks for it.
+util::Status checkPlyHeader(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[3] = {};
+    if (!in.read(magic, 3)) return util::okStatus();
+    auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
+    if (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y') return util::okStatus();
+    auto lineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
+    const std::string token = "end_header";
+    std::string window = "ply"; // the bytes not yet searched, plus the token's length of overlap
+    std::vector<char> chunk(1 << 16);
+    size_t offset = 0;            // file position of window[0]
+    for (bool more = true; more;) {
+        in.read(chunk.data(), std::streamsize(chunk.size()));
+        const size_t got = size_t(in.gcount());
+        more = got == chunk.size();
+        window.append(chunk.data(), got);
+        for (size_t at = window.find(token); at != std::string::npos; at = window.find(token, at + 1)) {
+            const bool lineStart = offset + at == 0 || (at > 0 && lineEnd(window[at - 1]));
+            const size_t after = at + token.size();
+            if (after == window.size() && more) break; // the next chunk decides
+            const bool tokenEnd = after == window.size() || lineEnd(window[after]) || window[after] == ' ' || window[after] == '\t';
+            if (lineStart && tokenEnd) return util::okStatus();
+        }
+        const size_t keep = std::min(window.size(), token.size() + 1);
+        offset += window.size() - keep;
+        window.erase(0, window.size() - keep);
+    }
+    return makeError(ErrorKind::Format, path, "cannot read mesh: PLY header has no 'end_header' line");
+}
+
+// Assimp 5.2's glTF 2 reader allocates a GLB chunk's stated length before reading it: a 29-byte
+// file stating a 4 GB JSON chunk made it allocate 4 GB (fuzz_gltf finding). A file Assimp would read
+// as GLB (it starts with the magic "glTF") is refused here unless its header and every chunk it
+// states fit in the file.
+util::Status checkGlbChunks(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const uint64_t size = uint64_t(in.tellg());
+    in.seekg(0);
+    auto u32 = [&](uint32_t& v) {
+        uint8_t b[4];
+        if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+        v = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
+        return true;
+    };
+    uint32_t magic = 0, version = 0, length = 0;
+    if (!u32(magic) || magic != 0x46546c67u) return util::okStatus(); // "glTF"
+    auto bad = [&](const std::string& what) {
+        return makeError(ErrorKind::Format, path, "cannot read mesh: GLB " + what + " (the file has " + std::to_string(size) + " bytes)");
+    };
+    if (!u32(version) || !u32(length)) return bad("header is truncated");
+    if (length > size) return bad("header states " + std::to_string(length) + " bytes");
+    for (uint64_t at = 12; at + 8 <= length; ) {
+        uint32_t chunkLength = 0, chunkType = 0;
+        in.seekg(std::streamoff(at));
+        if (!u32(chunkLength) || !u32(chunkType)) return bad("chunk header at byte " + std::to_string(at) + " is truncated");
+        if (at + 8 + chunkLength > length)
+            return bad("chunk at byte " + std::to_string(at) + " states " + std::to_string(chunkLength) + " bytes");
+        at += 8 + uint64_t(chunkLength);
+    }
+    return util::okStatus();
+}
+
+// Assimp's post-processing asserts (and Debian's build aborts) when a mesh states polygons it does
+// not have: a PLY face list with a stray "[" gave such a mesh and `validate` died with exit 134
+// (fuzz_ply finding). The raw meshes are checked before post-processing sees them.
+util::Status checkPrimitiveTypes(const aiScene* raw, const std::string& path) {
+    for (unsigned mi = 0; mi < raw->mNumMeshes; ++mi) {
+        const aiMesh* m = raw->mMeshes[mi];
+        if (!(m->mPrimitiveTypes & aiPrimitiveType_POLYGON)) continue;
+        bool polygon = false;
+        for (unsigned f = 0; f < m->mNumFaces && !polygon; ++f) polygon = m->mFaces[f].mNumIndices > 3;
+        if (!polygon)
+            return makeError(ErrorKind::Format, path, "cannot read mesh: mesh " + std::to_string(mi) +
+                                                          " states polygons but has none (malformed face list)");
+    }
+    return util::okStatus();
+}
+
 } // namespace
 
 bool isMeshExtension(const std::string& ext) {
@@ -53,9 +139,13 @@ bool isMeshExtension(const std::string& ext) {
     return false;
 }
 
-util::Result<TriangleMesh> loadMesh(const std::string& path, std::vector<std::string>* warnings) {
+namespace {
+
+util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vector<std::string>* warnings) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such mesh file");
+    if (auto s = checkPlyHeader(path); !s) return s.error();
+    if (auto s = checkGlbChunks(path); !s) return s.error();
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read without post-processing first: NaN positions must be rejected before the
@@ -68,6 +158,7 @@ util::Result<TriangleMesh> loadMesh(const std::string& path, std::vector<std::st
             if (!finite(glm::vec3(m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z)))
                 return makeError(ErrorKind::Invalid, path, "vertex " + std::to_string(v) + " is NaN or infinite");
     }
+    if (auto c = checkPrimitiveTypes(raw, path); !c) return c.error();
     const aiScene* s = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                                     aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
                                                     aiProcess_SortByPType);
@@ -111,6 +202,12 @@ util::Result<TriangleMesh> loadMesh(const std::string& path, std::vector<std::st
         normalsOk = finite(mesh.normals[i]) && glm::length(mesh.normals[i]) > 0.5f;
     if (!normalsOk) mesh.normals = smoothNormals(mesh);
     return mesh;
+}
+
+} // namespace
+
+util::Result<TriangleMesh> loadMesh(const std::string& path, std::vector<std::string>* warnings) {
+    return guardLoad<TriangleMesh>(path, [&] { return loadMeshUnguarded(path, warnings); });
 }
 
 } // namespace wavelit::scene

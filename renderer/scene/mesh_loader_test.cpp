@@ -73,5 +73,59 @@ TEST_F(MeshLoader, RejectsBrokenMeshesNamingFileAndProblem) {
     EXPECT_EQ(loadMesh((dir / "missing.obj").string()).error().kind, util::ErrorKind::NotFound);
 }
 
+// fuzz_ply finding: Assimp 5.2's PLY reader never returned on a header without "end_header"
+// (validate hung). Such files are refused at once, whatever their extension; a header whose
+// "end_header" line is there loads, in either case of the magic.
+TEST_F(MeshLoader, PlyHeaderWithoutEndHeaderIsAnErrorNotAHang) {
+    const std::string body = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\n";
+    for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+             {"fuzz_finding.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproder\n1 2\n"},
+             {"no_end.ply", "ply\nformat ascii 1.0\n" + body + "0 0 0\n1 0 0\n0 0 -1\n3 0 1 2\n"},
+             {"magic_only.ply", "ply"},
+             {"not_a_line.ply", "ply\nformat ascii 1.0\n" + body + "comment no end_header here\n"},
+             {"upper_case.xyz", "PLY\nformat ascii 1.0\n" + body}}) {
+        auto m = loadMesh(write(name, text));
+        ASSERT_FALSE(m.ok()) << name;
+        EXPECT_EQ(m.error().message(), (dir / name).string() + ": cannot read mesh: PLY header has no 'end_header' line");
+    }
+    auto ok = loadMesh(write("tri.ply", "ply\r\nformat ascii 1.0\r\n" + body + "end_header\r\n0 0 0\n1 0 0\n0 0 -1\n3 0 1 2\n"));
+    ASSERT_TRUE(ok.ok()) << ok.error().message();
+    EXPECT_EQ(ok->triangleCount(), 1u);
+}
+
+// fuzz_gltf finding: a 29-byte GLB stating a 4 GB JSON chunk made Assimp allocate 4 GB before
+// failing. Chunks that do not fit in the file are refused before Assimp reads them.
+TEST_F(MeshLoader, GlbChunksLargerThanTheFileAreRefusedBeforeAllocation) {
+    const std::string finding("glTF\x02\0\0\0\0\x10\0\0\x10\0\0\xf7JSON{bufferVi", 29);
+    auto m = loadMesh(write("huge_chunk.glb", finding));
+    ASSERT_FALSE(m.ok());
+    EXPECT_EQ(m.error().message(), (dir / "huge_chunk.glb").string() +
+                                       ": cannot read mesh: GLB header states 4096 bytes (the file has 29 bytes)");
+    // The same chunk in a header that states the file's true length.
+    auto chunk = loadMesh(write("chunk.glb", std::string("glTF\x02\0\0\0\x1c\0\0\0\x10\0\0\xf7JSON{\"asset\"", 28)));
+    ASSERT_FALSE(chunk.ok());
+    EXPECT_NE(chunk.error().reason.find("GLB chunk at byte 12 states 4143972368 bytes (the file has 28 bytes)"), std::string::npos)
+        << chunk.error().message();
+    auto seed = loadMesh(std::string(WAVELIT_TEST_DATA_DIR) + "/../fuzz/corpus/fuzz_gltf/triangle.glb");
+    ASSERT_TRUE(seed.ok()) << seed.error().message();
+    EXPECT_EQ(seed->triangleCount(), 1u);
+}
+
+// fuzz_ply finding: a face list with a stray "[" gave Assimp a mesh stating polygons it did not
+// have; its triangulation asserted and `validate` aborted (exit 134).
+TEST_F(MeshLoader, MeshStatingPolygonsItDoesNotHaveIsAnError) {
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                               "-1 0 -1\n1 0 -1\n1 0 1\n-1 0 1\n";
+    auto m = loadMesh(write("bracket.ply", header + "[ 0 3 2 1\n"));
+    ASSERT_FALSE(m.ok());
+    EXPECT_EQ(m.error().message(), (dir / "bracket.ply").string() +
+                                       ": cannot read mesh: mesh 0 states polygons but has none (malformed face list)");
+    auto quad = loadMesh(write("quad.ply", header + "4 0 3 2 1\n"));
+    ASSERT_TRUE(quad.ok()) << quad.error().message();
+    EXPECT_EQ(quad->triangleCount(), 2u);
+}
+
 } // namespace
 } // namespace wavelit::scene

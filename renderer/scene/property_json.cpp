@@ -220,6 +220,17 @@ util::Status readProperties(const Json& obj, EntityKind kind, void* entity, cons
         if (!value) return value.error();
         info.set(entity, *value);
     }
+    // A key of the kind that this entity's type does not use (a cone on a rect light) would stay in
+    // the model unseen and vanish at the next save (writeProperties writes applicable ones only):
+    // listed like an unknown key. Checked once all keys are read, "type" included.
+    for (const PropertyInfo& info : properties(kind))
+        if (obj.contains(info.name) && !propertyApplies(info, entity)) {
+            std::string what = entityKindName(kind);
+            if (const PropertyInfo* type = findProperty(kind, "type"))
+                what = std::get<std::string>(type->get(entity)) + " " + what;
+            problems.push_back("key '" + info.name + "' in " + (at.where.empty() ? "/" : at.where) +
+                               " does not apply to a " + what);
+        }
     return util::okStatus();
 }
 

@@ -35,8 +35,9 @@ Json valueToJson(const PropertyValue& value);
 // Reads the registry properties of `kind` from object `obj` into `entity`. Keys listed in
 // `structural` (ids, nested sections) are the caller's. "extras" (an object) is stored as JSON text
 // in *extras. Problems the file's author must fix but that do not stop the reading — an unknown
-// key (with the closest known key when one is close), an option of a named kind the registry does
-// not have (an unknown BRDF) — are appended to `problems`, one line each, so a load can list them
+// key (with the closest known key when one is close), a key the entity's type does not use (a cone
+// on a rect light), an option of a named kind the registry does not have (an unknown BRDF) — are
+// appended to `problems`, one line each, so a load can list them
 // all; any other bad value is returned as the error. Missing optional keys keep the entity's value.
 util::Status readProperties(const Json& obj, EntityKind kind, void* entity, const JsonPlace& at,
                             const std::set<std::string>& structural, std::string* extras,

@@ -74,7 +74,8 @@ const std::vector<PropertyInfo>& properties(EntityKind kind);
 const PropertyInfo* findProperty(EntityKind kind, std::string_view name);
 
 // True when the property means something for this entity (a Sun has no radius). JSON writes only
-// applicable properties; reading accepts them all.
+// applicable properties; reading lists the others as problems (property_json.h), since a save
+// would drop them.
 bool propertyApplies(const PropertyInfo& info, const void* entity);
 
 // Type, range, enum option and path checks. The error's reason names the property.

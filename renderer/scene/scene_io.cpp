@@ -13,6 +13,7 @@
 
 #include "scene/atomic_file.h"
 #include "scene/image_io.h"
+#include "scene/load_guard.h"
 #include "scene/mesh_loader.h"
 #include "scene/property_json.h"
 #include "scene/scene_migration.h"
@@ -78,6 +79,16 @@ util::Status readRootExtras(const Json& obj, const JsonPlace& at, std::string* e
     return it == obj.end() ? util::okStatus() : readExtras(*it, at.child("extras"), extras);
 }
 
+// " at line N" for the overflowing literal quoted in nlohmann's "number overflow parsing '1e999'"
+// (its first occurrence in the text), so a hand-edited file says where to look.
+std::string numberOverflowPlace(const std::string& text, const std::string& reason) {
+    const size_t open = reason.find('\''), close = reason.rfind('\'');
+    if (open == std::string::npos || close <= open + 1) return {};
+    const size_t at = text.find(reason.substr(open + 1, close - open - 1));
+    if (at == std::string::npos) return {};
+    return " at line " + std::to_string(1 + std::count(text.begin(), text.begin() + ptrdiff_t(at), '\n'));
+}
+
 util::Result<Json> readJsonFile(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such file");
@@ -85,12 +96,16 @@ util::Result<Json> readJsonFile(const std::string& path) {
     std::stringstream text;
     text << in.rdbuf();
     if (!in) return makeError(ErrorKind::Io, path, "cannot read file");
+    const std::string bytes = text.str();
     try {
-        return Json::parse(text.str());
-    } catch (const Json::parse_error& e) {
-        // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+        return Json::parse(bytes);
+    } catch (const Json::exception& e) {
+        // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ..." or,
+        // for a number no double holds (1e999), "[json.exception.out_of_range.406] number
+        // overflow parsing '1e999'", which has no place: the line of the literal is added.
         std::string reason = e.what();
         if (auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
+        if (e.id == 406) reason += numberOverflowPlace(bytes, reason);
         return makeError(ErrorKind::Format, path, "invalid JSON: " + reason);
     }
 }
@@ -273,7 +288,9 @@ util::Status loadAssets(Scene& scene, const std::string& scenePath, LoadReport* 
                            "/environment/map", report);
 }
 
-util::Result<Scene> loadScene(const std::string& path, LoadReport* report) {
+namespace {
+
+util::Result<Scene> loadSceneUnguarded(const std::string& path, LoadReport* report) {
     auto doc = readJsonFile(path);
     if (!doc) return doc.error();
     if (auto s = checkAndMigrate(*doc, "wavelit-scene", kSceneFormatVersion, path); !s) return s.error();
@@ -320,7 +337,7 @@ util::Result<Scene> loadScene(const std::string& path, LoadReport* report) {
     return scene;
 }
 
-util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadReport* report) {
+util::Result<LightingSetup> loadLightingSetupUnguarded(const std::string& path, LoadReport* report) {
     auto doc = readJsonFile(path);
     if (!doc) return doc.error();
     if (auto s = checkAndMigrate(*doc, "wavelit-lighting", kLightingFormatVersion, path); !s) return s.error();
@@ -330,6 +347,16 @@ util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadRepor
     if (!lighting) return lighting;
     if (auto s = loadEnvironment(lighting->environment, folderOf(path), path, "/environment/map", report); !s) return s.error();
     return lighting;
+}
+
+} // namespace
+
+util::Result<Scene> loadScene(const std::string& path, LoadReport* report) {
+    return guardLoad<Scene>(path, [&] { return loadSceneUnguarded(path, report); });
+}
+
+util::Result<LightingSetup> loadLightingSetup(const std::string& path, LoadReport* report) {
+    return guardLoad<LightingSetup>(path, [&] { return loadLightingSetupUnguarded(path, report); });
 }
 
 util::Status saveScene(const Scene& scene, const std::string& path) {
