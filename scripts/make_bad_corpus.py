@@ -139,6 +139,8 @@ def main():
     files["wide_65536x1.exr"] = exr_bytes(65536, 1, lambda x, y: (1.0, 1.0, 1.0), HALF, compression=2)
     hdr = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n"
     files["truncated.hdr"] = hdr + rgbe(1.0, 0.5, 0.25) * 9   # 9 of 32 pixels
+    # A header stating 16384x16384 over no pixels (issue 15: every load allocated 3 GiB before failing).
+    files["huge_header.hdr"] = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 16384\n"
     files["not_an_image.hdr"] = b"this is a text file, not a Radiance picture\n"
 
     # --- meshes ---

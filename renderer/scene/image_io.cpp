@@ -49,24 +49,37 @@ util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) 
         if (!rgb && !grey)
             return makeError(ErrorKind::Unsupported, path, "no R,G,B or Y channels");
 
-        util::ImageRGB image{int(w), int(h)};
-        // Slices address pixel (x, y) of the data window; OpenEXR wants the base pointer shifted
-        // so that (dw.min.x, dw.min.y) lands on pixels[0].
-        char* base = reinterpret_cast<char*>(image.pixels.data()) -
-                     (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * w) * ptrdiff_t(sizeof(glm::vec3));
-        const size_t xs = sizeof(glm::vec3), ys = sizeof(glm::vec3) * size_t(w);
-        Imf::FrameBuffer fb;
-        if (rgb) {
-            fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys, 1, 1, 0.0));
-            fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys, 1, 1, 0.0));
-            fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys, 1, 1, 0.0));
-        } else {
-            fb.insert("Y", Imf::Slice(Imf::FLOAT, base, xs, ys, 1, 1, 0.0));
+        // Read in bands of rows, the image growing as they arrive: a corrupt header stating a huge
+        // data window fails on its first band instead of first allocating the whole image (a few
+        // hundred bytes could cost gigabytes). The image is reserved in full once a band has read.
+        constexpr long long kBandRows = 64;
+        util::ImageRGB image;
+        image.width = int(w);
+        image.height = int(h);
+        std::vector<glm::vec3> band;
+        for (long long y0 = dw.min.y; y0 <= dw.max.y; y0 += kBandRows) {
+            const long long y1 = std::min<long long>(y0 + kBandRows - 1, dw.max.y);
+            band.assign(size_t(w) * size_t(y1 - y0 + 1), glm::vec3(0.0f));
+            // Slices address pixel (x, y) of the data window; OpenEXR wants the base pointer
+            // shifted so that (dw.min.x, y0) lands on band[0].
+            char* base = reinterpret_cast<char*>(band.data()) -
+                         (ptrdiff_t(dw.min.x) + ptrdiff_t(y0) * ptrdiff_t(w)) * ptrdiff_t(sizeof(glm::vec3));
+            const size_t xs = sizeof(glm::vec3), ys = sizeof(glm::vec3) * size_t(w);
+            Imf::FrameBuffer fb;
+            if (rgb) {
+                fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys, 1, 1, 0.0));
+                fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys, 1, 1, 0.0));
+                fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys, 1, 1, 0.0));
+            } else {
+                fb.insert("Y", Imf::Slice(Imf::FLOAT, base, xs, ys, 1, 1, 0.0));
+            }
+            file.setFrameBuffer(fb);
+            file.readPixels(int(y0), int(y1));
+            if (!rgb)
+                for (auto& p : band) p = glm::vec3(p.r);
+            if (image.pixels.empty()) image.pixels.reserve(size_t(w) * size_t(h));
+            image.pixels.insert(image.pixels.end(), band.begin(), band.end());
         }
-        file.setFrameBuffer(fb);
-        file.readPixels(dw.min.y, dw.max.y);
-        if (!rgb)
-            for (auto& p : image.pixels) p = glm::vec3(p.r);
         return image;
     } catch (const std::exception& e) {
         return makeError(ErrorKind::Format, path, std::string("cannot read EXR: ") + e.what());

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 
+#include <sys/resource.h>
+
 namespace wavelit::scene {
 namespace {
 
@@ -100,6 +102,81 @@ TEST(ImageIo, BundledStudioEnvironmentLoads) {
     double sum = 0;
     for (auto& p : env->image.pixels) sum += p.r + p.g + p.b;
     EXPECT_GT(sum, 0.0);
+}
+
+const fs::path kFuzzCorpus = fs::path(WAVELIT_TEST_DATA_DIR) / ".." / "fuzz" / "corpus";
+
+// Peak resident memory of this process so far, in MiB.
+long peakMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024;
+}
+
+// Issue 15 (found while fuzzing, confirmed with fuzz_hdr / fuzz_exr): a header stating a huge image
+// over a few bytes made every load allocate the whole image (3 GiB) before failing on the missing
+// pixels. The HDR reader bounds the rows by the bytes left; the EXR reader reads bands of rows and
+// fails on the first one.
+TEST(ImageIo, HugeHeadersOverTinyFilesFailBeforeAllocatingTheImage) {
+    const long before = peakMiB();
+    const std::string hdr = (kFuzzCorpus / "fuzz_hdr/finding_oom_huge_header.hdr").string();
+    auto h = loadImage(hdr);
+    ASSERT_FALSE(h.ok());
+    EXPECT_EQ(h.error().message(), hdr + ": truncated or corrupt scanlines: 16384x16384 needs at least "
+                                         "17104896 bytes of pixel data, the file has 0");
+    const std::string exr = (kFuzzCorpus / "fuzz_exr/finding_oom_huge_window_dwab.exr").string();
+    auto e = loadImage(exr);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message().find(exr + ": cannot read EXR: "), std::string::npos) << e.error().message();
+    EXPECT_LT(peakMiB() - before, 256) << "MiB allocated for files of " << fs::file_size(hdr) << " and "
+                                       << fs::file_size(exr) << " bytes";
+}
+
+// The band-wise EXR reader against every compression, a tiled mipmapped file, a luminance-only one
+// with an offset data window, and an image taller than one band.
+TEST(ImageIo, ExrReadsEveryCompressionAndImagesOfManyBands) {
+    auto reference = loadImage((kFuzzCorpus / "fuzz_exr/rgba_none.exr").string());
+    ASSERT_TRUE(reference.ok()) << reference.error().message();
+    for (const auto& entry : fs::directory_iterator(kFuzzCorpus / "fuzz_exr")) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("rgba_", 0) != 0 && name != "tiled_mip.exr") continue;
+        auto image = loadImage(entry.path().string());
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        ASSERT_EQ(image->image.pixels.size(), reference->image.pixels.size()) << name;
+        const float tolerance = name == "tiled_mip.exr" ? 0.0f : 0.02f; // lossy B44/DWA/PXR24
+        for (size_t i = 0; i < image->image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image->image.pixels[i][c], reference->image.pixels[i][c],
+                            tolerance + 0.02f * reference->image.pixels[i][c]) << name << " texel " << i;
+    }
+    auto grey = loadImage((kFuzzCorpus / "fuzz_exr/y_float_window.exr").string());
+    ASSERT_TRUE(grey.ok()) << grey.error().message();
+    EXPECT_EQ(grey->image.width, 8);
+    EXPECT_EQ(grey->image.height, 4);
+    for (const glm::vec3& p : grey->image.pixels) EXPECT_EQ(p, glm::vec3(0.5f));
+
+    util::ImageRGB tall(3, 150);
+    for (int y = 0; y < tall.height; ++y)
+        for (int x = 0; x < tall.width; ++x) tall.at(x, y) = glm::vec3(float(x), float(y), 0.5f);
+    const std::string path = (tempDir() / "tall.exr").string();
+    ASSERT_TRUE(writeExr(path, tall).ok());
+    auto loaded = loadImage(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message();
+    ASSERT_EQ(loaded->image.pixels.size(), tall.pixels.size());
+    for (size_t i = 0; i < tall.pixels.size(); ++i) ASSERT_EQ(loaded->image.pixels[i], tall.pixels[i]) << i;
+}
+
+TEST(ImageIo, RadianceHdrFlatAndRunLengthScanlinesLoad) {
+    auto flat = loadImage((kFuzzCorpus / "fuzz_hdr/flat_4x2.hdr").string());
+    ASSERT_TRUE(flat.ok()) << flat.error().message();
+    EXPECT_EQ(flat->image.width, 4);
+    EXPECT_EQ(flat->image.height, 2);
+    EXPECT_NEAR(flat->image.at(0, 1).b, 2.1f, 0.02f);
+    auto rle = loadImage((kFuzzCorpus / "fuzz_hdr/rle_16x3.hdr").string());
+    ASSERT_TRUE(rle.ok()) << rle.error().message();
+    EXPECT_EQ(rle->image.width, 16);
+    EXPECT_EQ(rle->image.height, 3);
+    EXPECT_NEAR(rle->image.at(3, 2).b, 201.0f, 1.0f);
 }
 
 } // namespace

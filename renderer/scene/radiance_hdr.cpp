@@ -69,6 +69,21 @@ util::Result<util::ImageRGB> readRadianceHdr(const std::string& path, int maxDim
         return makeError(ErrorKind::Unsupported, path, "unsupported orientation '" + line + "'");
     if (w <= 0 || h <= 0 || w > maxDimension || h > maxDimension)
         return makeError(ErrorKind::Invalid, path, "bad size " + std::to_string(w) + "x" + std::to_string(h));
+    // The smallest encoding of a scanline (RLE: 4 header bytes and, per component, one 2-byte
+    // run per 127 pixels; flat: 4 bytes a pixel) bounds what the rest of the file can hold, so a
+    // header claiming more rows than the bytes that follow is refused before the image is allocated
+    // (a 46-byte file stating 16384x16384 made every load allocate 3 GiB).
+    const std::streampos pixelsAt = in.tellg();
+    in.seekg(0, std::ios::end);
+    const uint64_t remaining = uint64_t(in.tellg() - pixelsAt);
+    in.seekg(pixelsAt);
+    const bool rlePossible = w >= 8 && w < 32768;
+    const uint64_t minScanline = rlePossible ? 4 + 4 * 2 * ((uint64_t(w) + 126) / 127) : 4 * uint64_t(w);
+    if (remaining < uint64_t(h) * minScanline)
+        return makeError(ErrorKind::Format, path,
+                         "truncated or corrupt scanlines: " + std::to_string(w) + "x" + std::to_string(h) +
+                             " needs at least " + std::to_string(uint64_t(h) * minScanline) +
+                             " bytes of pixel data, the file has " + std::to_string(remaining));
     util::ImageRGB image(w, h);
     std::vector<uint8_t> scan(size_t(w) * 4);
     for (int y = 0; y < h; ++y) {
