@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 15: a hand-edited number no double holds (1e999) aborted `validate` with an uncaught JSON
-# exception (exit 134). Every command that loads the file exits 1 with one message naming the file,
-# the literal and its line; a refused render writes nothing.
+# exception (exit 134), and an "extras" nested 100000 levels deep overflowed the stack (exit 139).
+# Every command that loads such a file exits 1 with one message naming the file, the problem and its
+# line; a refused render writes nothing.
 # Usage: bash cli_number_overflow_test.sh <wavelit-cli> <source-dir>
 set -u
 cli="$1"
@@ -53,6 +54,15 @@ for cmd in validate render; do
         -- "$cmd" "$tmp/negative.wlscene" "${args[@]}"
     expect 1 "upper.wlscene: invalid JSON: number overflow parsing '2.5E+308' at line 2" \
         -- "$cmd" "$tmp/upper.wlscene" "${args[@]}"
+done
+[ ! -e "$tmp/x.exr" ] || fail "a refused render wrote $tmp/x.exr"
+
+deep=$(printf '%*s' 100000 '' | tr ' ' '[')$(printf '%*s' 100000 '' | tr ' ' ']')
+scene '{"environment": {"intensity": 1}, "extras": {"a": '"$deep"'}}' '[0, 1, 4]' >"$tmp/deep.wlscene"
+for cmd in validate render; do
+    args=()
+    [ "$cmd" = render ] && args=(-o "$tmp/x.exr" "${tiny[@]}")
+    expect 1 "deep.wlscene: invalid JSON: nested deeper than 256 levels at line 5" -- "$cmd" "$tmp/deep.wlscene" "${args[@]}"
 done
 [ ! -e "$tmp/x.exr" ] || fail "a refused render wrote $tmp/x.exr"
 

@@ -77,7 +77,9 @@ util::Result<PropertyValue> valueFromJson(const Json& v, const PropertyInfo& inf
         break;
     case PropertyType::Int:
         if (!v.is_number_integer()) return wrong("an integer");
-        if (v.get<int64_t>() < std::numeric_limits<int>::min() || v.get<int64_t>() > std::numeric_limits<int>::max())
+        // Unsigned values past INT64_MAX would wrap to negatives in get<int64_t>().
+        if ((v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(std::numeric_limits<int>::max())) ||
+            v.get<int64_t>() < std::numeric_limits<int>::min() || v.get<int64_t>() > std::numeric_limits<int>::max())
             return jsonError(ErrorKind::Invalid, at, info.name + ": integer out of range");
         value = int(v.get<int64_t>());
         break;

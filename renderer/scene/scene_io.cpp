@@ -89,6 +89,34 @@ std::string numberOverflowPlace(const std::string& text, const std::string& reas
     return " at line " + std::to_string(1 + std::count(text.begin(), text.begin() + ptrdiff_t(at), '\n'));
 }
 
+// Deepest nesting of arrays and objects a document may have. Wavelit's own need 4 levels, "extras"
+// of other tools a few more; nlohmann's dump and copies recurse once per level, so a 100000-deep
+// "extras" overflowed the stack (segfault in `validate`) and is refused before parsing.
+constexpr int kMaxJsonDepth = 256;
+
+// The 1-based line where `text` first nests deeper than kMaxJsonDepth, or 0. Brackets inside
+// strings do not count.
+size_t lineTooDeep(const std::string& text) {
+    int depth = 0;
+    size_t line = 1;
+    bool inString = false, escaped = false;
+    for (const char c : text) {
+        if (c == '\n') ++line;
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return line;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return 0;
+}
+
 util::Result<Json> readJsonFile(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such file");
@@ -97,6 +125,9 @@ util::Result<Json> readJsonFile(const std::string& path) {
     text << in.rdbuf();
     if (!in) return makeError(ErrorKind::Io, path, "cannot read file");
     const std::string bytes = text.str();
+    if (const size_t line = lineTooDeep(bytes))
+        return makeError(ErrorKind::Format, path, "invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                                      " levels at line " + std::to_string(line));
     try {
         return Json::parse(bytes);
     } catch (const Json::exception& e) {
