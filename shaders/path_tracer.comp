@@ -20,7 +20,7 @@
 #endif
 layout(local_size_x = WAVELIT_WORKGROUP_X, local_size_y = WAVELIT_WORKGROUP_Y) in;
 
-layout(std140, binding = 0) uniform Params {
+layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu_path_tracer.h
     vec4 camPosition;  // xyz
     vec4 camForward;   // xyz; w = tan(vfov / 2)
     vec4 camRight;     // xyz; w = aspect

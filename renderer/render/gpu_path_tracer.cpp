@@ -15,6 +15,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iterator>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 #ifndef WAVELIT_SHADER_DIR
@@ -71,6 +73,7 @@ public:
     }
     SamplerTablesRebuilds samplerRebuilds() const override { return m_tablesCache.rebuilds(); }
     int validationMessageCount() const override { return m_context->validationMessageCount(); }
+    void setInterruptCheck(InterruptCheck check) override { m_interrupt = std::move(check); }
     util::Status setScene(std::shared_ptr<const scene::Scene> scene,
                           std::shared_ptr<const scene::Bvh> bvh) override;
 
@@ -82,6 +85,18 @@ private:
     // the previous scene stays intact. No dispatch is in flight (renderPass waits).
     util::Status uploadScene(const scene::Scene& scene, const scene::Bvh& bvh);
     bool usesDirectionSamplers() const { return m_options.sampler != SamplerKind::Bsdf; }
+    // A pass is cut into tiles of kTileGroups x kTileGroups workgroups (16 x 16 pixels), taken
+    // in a scattered order (tile i of the order is i * stride mod count) so that every piece
+    // samples the whole image: a piece's cost then follows its tile count, whereas runs in
+    // row order went from cheap sky rows to the costly ring and took 0.7 s instead of 40 ms.
+    struct PassTiles {
+        uint32_t groupsX = 0, groupsY = 0, tilesX = 0, count = 0, stride = 1;
+    };
+    static constexpr uint32_t kTileGroups = 2;
+    PassTiles passTiles() const;
+    // Submits tiles [first, first + count) of the order (one dispatch each) and waits.
+    util::Status dispatchPiece(const PassTiles& tiles, uint32_t first, uint32_t count,
+                               const PassPush& push);
 
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
@@ -101,6 +116,12 @@ private:
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
     int m_passes = 0;
+    // The pass in progress: the next tile (in PassTiles order) to dispatch; 0 between passes.
+    uint32_t m_nextTile = 0;
+    double m_passElapsed = 0.0;    // seconds spent on the unfinished pass so far
+    double m_secondsPerTile = 0.0; // measured, smoothed over pieces; 0 = unknown yet
+    uint32_t m_lastPieceTiles = 0;
+    InterruptCheck m_interrupt;
 };
 
 util::Result<vk::Buffer> GpuPathTracer::upload(const void* data, size_t bytes,
@@ -165,7 +186,8 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     using vk::BindingKind;
     std::vector<BindingKind> bindings(pt->usesDirectionSamplers() ? 10 : 7,
                                       BindingKind::StorageBuffer);
-    bindings[kParams] = BindingKind::UniformBuffer;
+    // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
+    bindings[kParams] = BindingKind::StorageBuffer;
     auto kernel = vk::ComputeKernel::create(
         *pt->m_context, {"path_tracer", std::move(spirv.value()), bindings, sizeof(PassPush)});
     if (!kernel)
@@ -237,7 +259,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         VkBufferUsageFlags usage;
         const char* name;
     } uploads[] = {
-        {kParams, &m_params, &d.params, sizeof(d.params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+        {kParams, &m_params, &d.params, sizeof(d.params), kStorage,
          "params"},
         {kNodes, &m_nodes, bvh.nodes.data(), bvh.nodes.size() * sizeof(scene::BvhNode), kStorage,
          "bvh nodes"},
@@ -258,19 +280,30 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     };
     // The first six are the scene's; the last three exist only with direction samplers, and are
     // re-sent only when their tables changed.
+    // A buffer of the same size is written in place (most edits keep every size): creating and
+    // freeing ~2 MB of buffers per edit cost a Vulkan allocation each and ~45 KB of validation-
+    // layer bookkeeping per edit that was never given back. New buffers are all created before
+    // any is written, so a failed creation still leaves the previous scene intact.
     const size_t uploadCount = uploadSamplers ? std::size(uploads) : 6;
-    std::vector<vk::Buffer> fresh;
+    constexpr size_t kMinimumBufferBytes = 16; // vk::Buffer::create's rounding
+    std::vector<std::pair<size_t, vk::Buffer>> fresh;
     for (size_t i = 0; i < uploadCount; ++i) {
         const Upload& u = uploads[i];
-        auto buffer = upload(u.data, u.bytes, u.usage, u.name);
+        if (u.target->handle() != VK_NULL_HANDLE &&
+            u.target->size() == std::max(u.bytes, kMinimumBufferBytes))
+            continue;
+        auto buffer = upload(nullptr, u.bytes, u.usage, u.name);
         if (!buffer)
             return buffer.error();
-        fresh.push_back(std::move(buffer.value()));
+        fresh.emplace_back(i, std::move(buffer.value()));
     }
-    for (size_t i = 0; i < fresh.size(); ++i) {
-        *uploads[i].target = std::move(fresh[i]);
+    for (auto& [i, buffer] : fresh) {
+        *uploads[i].target = std::move(buffer);
         m_kernel.bind(uploads[i].binding, *uploads[i].target);
     }
+    for (size_t i = 0; i < uploadCount; ++i)
+        if (uploads[i].data && uploads[i].bytes)
+            uploads[i].target->write(uploads[i].data, uploads[i].bytes);
     m_samplerTables = std::move(samplerTables);
     std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
     m_samplerEnvMean = samplerEnvMean;
@@ -292,20 +325,66 @@ util::Status GpuPathTracer::setScene(std::shared_ptr<const scene::Scene> scene,
 }
 
 util::Status GpuPathTracer::renderPass() {
-    util::Timer timer;
-    uint64_t seed = gpuPassSeed(m_options.seed, m_passes);
-    PassPush push{uint32_t(seed), uint32_t(seed >> 32)};
-    uint32_t gx = (uint32_t(m_options.width) + kWorkgroupX - 1) / kWorkgroupX;
-    uint32_t gy = (uint32_t(m_options.height) + kWorkgroupY - 1) / kWorkgroupY;
-    auto status = m_runner->run([&](VkCommandBuffer cmd) {
-        m_kernel.dispatch(cmd, gx, gy, 1, &push);
+    const uint64_t seed = gpuPassSeed(m_options.seed, m_passes);
+    const PassPush push{uint32_t(seed), uint32_t(seed >> 32)};
+    const PassTiles tiles = passTiles();
+    // Until a piece has been timed, a small first piece: 4 tiles (1024 pixels) take ~45 ms with
+    // `wavelet` on lavapipe under load (a 1600x1000 pass took 71 s), the slowest sampler but the
+    // oracle. Pieces at most double from one to the next.
+    constexpr uint32_t kFirstPieceTiles = 4;
+    while (m_nextTile < tiles.count) {
+        if (m_interrupt && m_interrupt())
+            return util::okStatus(); // unfinished: the next call resumes at m_nextTile
+        uint32_t count = kFirstPieceTiles;
+        if (m_secondsPerTile > 0.0)
+            count = uint32_t(std::clamp(kGpuPassPieceSeconds / m_secondsPerTile, 1.0,
+                                        2.0 * double(std::max(m_lastPieceTiles, kFirstPieceTiles))));
+        count = std::min(count, tiles.count - m_nextTile);
+        util::Timer timer;
+        if (auto status = dispatchPiece(tiles, m_nextTile, count, push); !status)
+            return status;
+        const double seconds = timer.seconds();
+        const double perTile = seconds / double(count);
+        m_secondsPerTile = m_secondsPerTile > 0.0 ? 0.5 * (m_secondsPerTile + perTile) : perTile;
+        m_lastPieceTiles = count;
+        m_passElapsed += seconds;
+        m_nextTile += count;
+    }
+    m_nextTile = 0;
+    ++m_passes;
+    m_timings.passSeconds += m_passElapsed;
+    m_passElapsed = 0.0;
+    return util::okStatus();
+}
+
+GpuPathTracer::PassTiles GpuPathTracer::passTiles() const {
+    PassTiles t;
+    t.groupsX = (uint32_t(m_options.width) + kWorkgroupX - 1) / kWorkgroupX;
+    t.groupsY = (uint32_t(m_options.height) + kWorkgroupY - 1) / kWorkgroupY;
+    t.tilesX = (t.groupsX + kTileGroups - 1) / kTileGroups;
+    t.count = t.tilesX * ((t.groupsY + kTileGroups - 1) / kTileGroups);
+    // A stride near count / golden ratio that is coprime with count visits every tile once.
+    t.stride = std::max<uint32_t>(1, uint32_t(double(t.count) * 0.6180339887));
+    while (std::gcd(t.stride, t.count) != 1)
+        ++t.stride;
+    return t;
+}
+
+util::Status GpuPathTracer::dispatchPiece(const PassTiles& tiles, uint32_t first, uint32_t count,
+                                          const PassPush& push) {
+    std::vector<vk::DispatchRegion> regions;
+    regions.reserve(count);
+    for (uint32_t i = first; i < first + count; ++i) {
+        const uint32_t tile = uint32_t((uint64_t(i) * tiles.stride) % tiles.count);
+        const uint32_t x = (tile % tiles.tilesX) * kTileGroups;
+        const uint32_t y = (tile / tiles.tilesX) * kTileGroups;
+        regions.push_back({x, y, std::min(kTileGroups, tiles.groupsX - x),
+                           std::min(kTileGroups, tiles.groupsY - y)});
+    }
+    return m_runner->run([&](VkCommandBuffer cmd) {
+        m_kernel.dispatchRegions(cmd, regions, &push);
         vk::computeToComputeAndHostBarrier(cmd);
     });
-    if (!status)
-        return status;
-    ++m_passes;
-    m_timings.passSeconds += timer.seconds();
-    return util::okStatus();
 }
 
 util::Result<util::ImageRGB> GpuPathTracer::image() {
@@ -324,6 +403,8 @@ void GpuPathTracer::resetAccumulation() {
     // renderPass waits for its fence, so no dispatch is in flight here.
     m_accumulation.fill(0);
     m_passes = 0;
+    m_nextTile = 0; // an unfinished pass is dropped with the sums it had added
+    m_passElapsed = 0.0;
     m_timings.passSeconds = 0.0;
 }
 

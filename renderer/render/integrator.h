@@ -7,6 +7,7 @@
 #include "util/image.h"
 #include "util/result.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,11 +25,21 @@ struct IntegratorTimings {
     double passSeconds = 0.0;     // sum over passes since the last reset
 };
 
+// Polled by an integrator between the pieces of a pass; true: return from renderPass now.
+using InterruptCheck = std::function<bool()>;
+
 class Integrator {
 public:
     virtual ~Integrator() = default;
-    // Adds one sample per pixel to the accumulation.
+    // Adds one sample per pixel to the accumulation. With an interrupt check set, an integrator
+    // that splits its pass into pieces (the Vulkan tracer: dispatch pieces of ~kGpuPassPieceSeconds)
+    // polls it between pieces and, when it says stop, returns ok with the pass unfinished
+    // (samplesPerPixel() unchanged); the next renderPass resumes the same pass where it stopped,
+    // so nothing is lost or counted twice. resetAccumulation/setScene drop an unfinished pass.
+    // image() is the mean of finished passes only when called between passes.
     virtual util::Status renderPass() = 0;
+    // Default: passes are not split (the CPU tracer), the check is never called.
+    virtual void setInterruptCheck(InterruptCheck /*check*/) {}
     virtual int samplesPerPixel() const = 0;
     // Mean radiance per pixel over the passes so far (linear Rec.709).
     virtual util::Result<util::ImageRGB> image() = 0;

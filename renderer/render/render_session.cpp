@@ -71,6 +71,7 @@ util::Status RenderSession::setScene(const scene::Scene& scene) {
     if (!integrator)
         return integrator.error();
     m_integrator = std::move(integrator.value());
+    m_integrator->setInterruptCheck(m_interrupt);
     m_scene = std::make_unique<scene::Scene>(scene);
     m_elapsed = 0.0;
     return util::okStatus();
@@ -83,6 +84,12 @@ util::Status RenderSession::renderPass() {
     auto status = m_integrator->renderPass();
     m_elapsed += timer.seconds();
     return status;
+}
+
+void RenderSession::setInterruptCheck(InterruptCheck check) {
+    m_interrupt = std::move(check);
+    if (m_integrator)
+        m_integrator->setInterruptCheck(m_interrupt);
 }
 
 int RenderSession::samplesPerPixel() const {

@@ -34,7 +34,13 @@ public:
                                                                 const RenderOptions& options);
     ~RenderSession();
 
+    // One pass (one sample per pixel), or less when the interrupt check stops it: then
+    // samplesPerPixel() is unchanged and the next call resumes the pass (Integrator::renderPass).
     util::Status renderPass();
+    // Polled between the pieces of a pass, from the thread that calls renderPass (the editor:
+    // "quitting, or a newer job or a display request is waiting"). Kept for integrators that a
+    // later setScene creates. The CPU tracer does not split passes and never calls it.
+    void setInterruptCheck(InterruptCheck check);
     int samplesPerPixel() const;
     util::Result<util::ImageRGB> image();
     RenderStats stats() const;
@@ -52,6 +58,7 @@ private:
     RenderOptions m_options;
     std::unique_ptr<scene::Scene> m_scene;
     std::unique_ptr<Integrator> m_integrator;
+    InterruptCheck m_interrupt;
     double m_elapsed = 0.0;
 };
 

@@ -93,6 +93,73 @@ TEST(RenderSession, AutoFallsBackToCpuOnlyWithoutAUsableVulkanDevice) {
     EXPECT_NE(refused.error().message().find("no-such-device-xyz"), std::string::npos);
 }
 
+// The Vulkan tracer submits a pass in pieces and polls the interrupt check between them (the
+// editor's quit and request path, issue 19): an interrupted pass leaves samplesPerPixel as it was,
+// the next renderPass resumes it, and the image is the uninterrupted one bit for bit; a reset
+// drops an unfinished pass.
+TEST(RenderSession, InterruptedPassesResumeToTheSameImage) {
+    if (!std::filesystem::exists(kDefaultScene))
+        GTEST_SKIP() << kDefaultScene << " not present";
+    auto scene = scene::loadScene(kDefaultScene);
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    RenderOptions o = smallVulkan();
+    o.width = 160; // 10 x 6 tiles of 16 x 16 pixels
+    o.height = 96;
+    o.sampler = SamplerKind::Bsdf;
+    constexpr int kPasses = 3;
+
+    auto plain = RenderSession::create(*scene, o);
+    ASSERT_TRUE(plain.ok()) << plain.error().message();
+    for (int i = 0; i < kPasses; ++i)
+        ASSERT_TRUE((*plain)->renderPass().ok());
+    auto expected = (*plain)->image();
+    ASSERT_TRUE(expected.ok());
+
+    auto pieced = RenderSession::create(*scene, o);
+    ASSERT_TRUE(pieced.ok()) << pieced.error().message();
+    int polls = 0;
+    (*pieced)->setInterruptCheck([&] { return ++polls % 2 == 0; }); // stop after every piece
+    int interrupted = 0;
+    while ((*pieced)->samplesPerPixel() < kPasses) {
+        const int before = (*pieced)->samplesPerPixel();
+        ASSERT_TRUE((*pieced)->renderPass().ok());
+        if ((*pieced)->samplesPerPixel() == before)
+            ++interrupted;
+        else
+            EXPECT_EQ((*pieced)->samplesPerPixel(), before + 1);
+        ASSERT_LT(interrupted, 10000);
+    }
+    // The first pass at least is pieced: 4 tiles first, then at most doubling: 4 + 8 + 16 + 32.
+    EXPECT_GE(interrupted, 3);
+    auto image = (*pieced)->image();
+    ASSERT_TRUE(image.ok());
+    ASSERT_EQ(image->pixels.size(), expected->pixels.size());
+    for (size_t i = 0; i < image->pixels.size(); ++i)
+        ASSERT_EQ(image->pixels[i], expected->pixels[i]) << "pixel " << i;
+
+    EXPECT_EQ((*pieced)->stats().validationMessages, 0);
+
+    // Interrupt a first pass after its first piece, reset: the next full pass is a first pass
+    // again, as in a session that never had the unfinished one.
+    auto partial = RenderSession::create(*scene, o);
+    ASSERT_TRUE(partial.ok()) << partial.error().message();
+    polls = 0;
+    (*partial)->setInterruptCheck([&] { return ++polls % 2 == 0; });
+    ASSERT_TRUE((*partial)->renderPass().ok());
+    EXPECT_EQ((*partial)->samplesPerPixel(), 0);
+    (*partial)->resetAccumulation();
+    (*partial)->setInterruptCheck(nullptr);
+    ASSERT_TRUE((*partial)->renderPass().ok());
+    EXPECT_EQ((*partial)->samplesPerPixel(), 1);
+    auto fresh = RenderSession::create(*scene, o);
+    ASSERT_TRUE(fresh.ok());
+    ASSERT_TRUE((*fresh)->renderPass().ok());
+    auto once = (*partial)->image(), onceFresh = (*fresh)->image();
+    ASSERT_TRUE(once.ok() && onceFresh.ok());
+    for (size_t i = 0; i < once->pixels.size(); ++i)
+        ASSERT_EQ(once->pixels[i], onceFresh->pixels[i]) << "pixel " << i;
+}
+
 TEST(RenderSession, SetSceneRestartsWithTheNewScene) {
     scene::Material mat;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 8, 4);

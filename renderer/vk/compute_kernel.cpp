@@ -69,6 +69,7 @@ util::Result<ComputeKernel> ComputeKernel::create(const Context& ctx,
 
     VkComputePipelineCreateInfo pipeInfo{};
     pipeInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+    pipeInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT; // dispatchRegions (Vulkan 1.1 core)
     pipeInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     pipeInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipeInfo.stage.module = module;
@@ -131,6 +132,20 @@ void ComputeKernel::dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t gro
         vkCmdPushConstants(cmd, m_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes,
                            pushConstants);
     vkCmdDispatch(cmd, groupsX, groupsY, groupsZ);
+}
+
+void ComputeKernel::dispatchRegions(VkCommandBuffer cmd, std::span<const DispatchRegion> regions,
+                                    const void* pushConstants) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.get());
+    VkDescriptorSet set = m_set;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.get(), 0, 1, &set, 0,
+                            nullptr);
+    if (m_pushBytes > 0 && pushConstants)
+        vkCmdPushConstants(cmd, m_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes,
+                           pushConstants);
+    for (const DispatchRegion& r : regions)
+        if (r.groupsX > 0 && r.groupsY > 0)
+            vkCmdDispatchBase(cmd, r.baseX, r.baseY, 0, r.groupsX, r.groupsY, 1);
 }
 
 } // namespace wavelit::vk

@@ -8,6 +8,7 @@
 #include "vk/handle.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,11 @@ class Buffer;
 class Context;
 
 enum class BindingKind { StorageBuffer, UniformBuffer };
+
+// A rectangle of workgroups [baseX, baseX + groupsX) x [baseY, baseY + groupsY) (z: one layer).
+struct DispatchRegion {
+    uint32_t baseX = 0, baseY = 0, groupsX = 0, groupsY = 0;
+};
 
 struct ComputeKernelDesc {
     std::string name; // debug name of every object
@@ -37,6 +43,11 @@ public:
     // Records bind + push constants + dispatch into cmd.
     void dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ,
                   const void* pushConstants = nullptr) const;
+    // Records bind + push constants + one vkCmdDispatchBase per region: gl_WorkGroupID and
+    // gl_GlobalInvocationID include the region's base, so a shader that indexes by them covers
+    // part of the full grid unchanged (a pass split into pieces that can be submitted apart).
+    void dispatchRegions(VkCommandBuffer cmd, std::span<const DispatchRegion> regions,
+                         const void* pushConstants = nullptr) const;
     double creationSeconds() const { return m_creationSeconds; }
 
 private:
