@@ -120,6 +120,7 @@ void MainWindow::wireDocument() {
 }
 
 void MainWindow::wireRendering() {
+    connect(m_viewport, &ViewportWidget::exposureChanged, m_render, &RenderController::setExposure);
     connect(m_render, &RenderController::frameReady, this, [this](const RenderFrame& frame) {
         m_viewport->showFrame(frame);
         m_status->showFrame(frame);

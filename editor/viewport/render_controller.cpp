@@ -5,12 +5,11 @@
 namespace wavelit::editor {
 
 RenderController::RenderController(RenderSettings settings, QObject* parent)
-    : QObject(parent), m_settings(settings), m_cancel(std::make_shared<std::atomic<bool>>(false)),
-      m_framesInFlight(std::make_shared<std::atomic<int>>(0)) {
+    : QObject(parent), m_settings(settings), m_shared(std::make_shared<RenderShared>()) {
     qRegisterMetaType<RenderFrame>();
     qRegisterMetaType<RenderJob>();
     m_thread.setObjectName("wavelit-render");
-    m_worker = new RenderWorker(m_cancel, m_framesInFlight);
+    m_worker = new RenderWorker(m_shared);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &RenderWorker::frameReady, this, &RenderController::onFrame,
@@ -20,14 +19,18 @@ RenderController::RenderController(RenderSettings settings, QObject* parent)
     m_thread.start();
 }
 
-RenderController::~RenderController() {
+RenderController::~RenderController() { shutdown(); }
+
+void RenderController::shutdown() {
     cancel();
+    // The worker's step returns at the next piece boundary; the loop then quits and `finished`
+    // deletes the worker (and with it the session and its device) on the render thread.
     m_thread.quit();
     m_thread.wait();
 }
 
 void RenderController::render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath) {
-    if (m_cancel->load()) return;
+    if (m_shared->cancel.load()) return;
     RenderJob job;
     job.generation = ++m_generation;
     job.maxSamplesPerPixel = m_settings.maxSamplesPerPixel;
@@ -42,16 +45,31 @@ void RenderController::render(std::shared_ptr<const scene::Scene> scene, const Q
     job.scene = std::move(scene);
     job.scenePath = scenePath.toStdString();
     m_latest = RenderFrame{};
+    // Counted before it is queued: the running pass stops at its next piece to take it.
+    m_shared->pendingRequests.fetch_add(1);
     QMetaObject::invokeMethod(
         m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->submit(std::move(job)); },
         Qt::QueuedConnection);
 }
 
-void RenderController::cancel() { m_cancel->store(true); }
+void RenderController::cancel() { m_shared->cancel.store(true); }
+
+void RenderController::setExposure(float ev) {
+    if (ev == m_exposureEv || m_shared->cancel.load()) return;
+    m_exposureEv = ev;
+    m_shared->exposureEv.store(ev);
+    // One queued retoneMap at a time: it reads the newest exposure when it runs.
+    if (m_shared->retoneMapQueued.exchange(true)) return;
+    m_shared->pendingRequests.fetch_add(1);
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->retoneMap(); },
+                              Qt::QueuedConnection);
+}
+
+bool RenderController::passRunning() const { return m_shared->passRunning.load(); }
 
 void RenderController::onFrame(RenderFrame frame) {
-    m_framesInFlight->fetch_sub(1);
-    if (frame.generation != m_generation || m_cancel->load()) return;
+    m_shared->framesInFlight.fetch_sub(1);
+    if (frame.generation != m_generation || m_shared->cancel.load()) return;
     m_latest = std::move(frame);
     emit frameReady(m_latest);
 }

@@ -1,8 +1,11 @@
 // RenderController: the UI thread's handle on rendering. Starts the render thread and its
 // RenderWorker, turns scene snapshots into RenderJobs (render size, device and spp limit from
-// RenderSettings) and forwards only frames and errors of the newest job. The UI thread never
-// blocks on the render thread, except in the destructor, which cancels and joins (at most one
-// pass) so the Vulkan device is destroyed on the thread that created it.
+// RenderSettings) and forwards only frames and errors of the newest job. Frames arrive tone-mapped
+// (RenderFrame::display, made on the render thread); setExposure re-maps there too. The UI thread
+// never blocks on the render thread, except in shutdown() (also run by the destructor), which
+// stops the running pass within one piece (~40 ms, gpu_path_tracer.h) and joins, so the Vulkan
+// device is still destroyed on the thread that created it (lavapipe and the validation layers do
+// not require that, but a device's objects are created and used only there: one thread, no locks).
 #pragma once
 
 #include "viewport/render_frame.h"
@@ -18,6 +21,7 @@
 namespace wavelit::editor {
 
 class RenderWorker;
+struct RenderShared;
 
 struct RenderSettings {
     render::DeviceChoice device = render::DeviceChoice::Auto;
@@ -33,13 +37,31 @@ class RenderController : public QObject {
     Q_OBJECT
 public:
     explicit RenderController(RenderSettings settings, QObject* parent = nullptr);
+    // Runs shutdown().
     ~RenderController() override;
+
+    // Stops rendering for good and joins the render thread: the running pass stops at its next
+    // piece boundary (the Vulkan tracer polls every ~40 ms), then the session, its Vulkan device
+    // and the worker are destroyed on the render thread. Returns within 0.5 s while a pass is
+    // running (measured: editor_render_thread_test). Not bounded: a session being created or a
+    // scene being swapped in (pipeline compile, sampler-table builds: up to ~3 s with `wavelet`
+    // after an environment edit) finishes that step first. Afterwards render() and
+    // setExposure() do nothing and no frame or error is delivered. Idempotent; for the quit
+    // path (e.g. after a "Save changes?" prompt), before the window goes.
+    void shutdown();
 
     // Restarts rendering with this scene (a new generation). A null scene stops rendering.
     // scenePath: the file its relative asset paths start from.
     void render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath);
-    // Stops after the current pass; no more frames are delivered.
+    // Stops rendering at the next piece boundary of the running pass (~40 ms); no more frames are
+    // delivered. Does not wait: shutdown() also joins.
     void cancel();
+    // Display exposure (EV) the render thread tone-maps with; a change re-maps the latest frame
+    // there and re-delivers it through frameReady (no restart, accumulation kept).
+    void setExposure(float ev);
+    float exposure() const { return m_exposureEv; }
+    // True while the render thread is inside a pass (tests wait for it).
+    bool passRunning() const;
 
     const RenderSettings& settings() const { return m_settings; }
     const RenderFrame& latestFrame() const { return m_latest; }
@@ -54,12 +76,12 @@ private:
     void onFailed(const QString& message, quint64 generation);
 
     RenderSettings m_settings;
-    std::shared_ptr<std::atomic<bool>> m_cancel;
-    std::shared_ptr<std::atomic<int>> m_framesInFlight;
+    std::shared_ptr<RenderShared> m_shared;
     QThread m_thread;
     RenderWorker* m_worker = nullptr; // lives on m_thread, deleted there when it finishes
     RenderFrame m_latest;
     quint64 m_generation = 0;
+    float m_exposureEv = 0.0f;
 };
 
 } // namespace wavelit::editor

@@ -1,12 +1,13 @@
 // What crosses between the UI thread and the render thread, both ways, by value through queued
-// signals. Images are shared immutable (shared_ptr<const>): the render thread never touches an
-// image after publishing it, so neither side needs a lock.
+// signals. Images are shared immutable (shared_ptr<const>, and QImage's implicit sharing): the
+// render thread never touches an image after publishing it, so neither side needs a lock.
 #pragma once
 
 #include "render/render_options.h"
 #include "scene/scene.h"
 #include "util/image.h"
 
+#include <QImage>
 #include <QMetaType>
 #include <QString>
 
@@ -27,9 +28,13 @@ struct RenderJob {
     quint64 generation = 0;
 };
 
-// A published frame: the mean linear radiance so far and the statistics that go with it.
+// A published frame: the mean linear radiance so far, its display form and the statistics that
+// go with it. The render thread tone-maps (tone_map.h) with the exposure it was last given
+// (RenderController::setExposure); an exposure change re-publishes the same samples re-mapped.
 struct RenderFrame {
     std::shared_ptr<const util::ImageRGB> image;
+    QImage display;               // toneMap(*image, displayExposureEv); null without an image
+    float displayExposureEv = 0.0f;
     int samplesPerPixel = 0;
     double elapsedSeconds = 0.0; // render time since the last restart
     QString deviceName;

@@ -1,5 +1,7 @@
 #include "viewport/render_worker.h"
 
+#include "viewport/tone_map.h"
+
 #include "scene/scene_io.h"
 
 #include <QTimer>
@@ -26,15 +28,31 @@ bool missingAssets(const scene::Scene& scene) {
 
 } // namespace
 
-RenderWorker::RenderWorker(std::shared_ptr<const std::atomic<bool>> cancel,
-                           std::shared_ptr<std::atomic<int>> framesInFlight)
-    : m_cancel(std::move(cancel)), m_framesInFlight(std::move(framesInFlight)) {}
+RenderWorker::RenderWorker(std::shared_ptr<RenderShared> shared) : m_shared(std::move(shared)) {}
 
 RenderWorker::~RenderWorker() = default;
 
 void RenderWorker::submit(RenderJob job) {
+    m_shared->pendingRequests.fetch_sub(1);
     m_pending = std::move(job);
     scheduleStep();
+}
+
+void RenderWorker::retoneMap() {
+    m_shared->pendingRequests.fetch_sub(1);
+    m_shared->retoneMapQueued.store(false);
+    if (m_shared->cancel.load() || !m_lastFrame.image || m_lastFrame.generation != m_generation)
+        return;
+    const float ev = m_shared->exposureEv.load();
+    if (ev == m_lastFrame.displayExposureEv) return;
+    RenderFrame frame = m_lastFrame;
+    frame.display = toneMap(*frame.image, ev);
+    frame.displayExposureEv = ev;
+    emitFrame(std::move(frame));
+}
+
+bool RenderWorker::interrupted() const {
+    return m_shared->cancel.load() || m_shared->pendingRequests.load() > 0;
 }
 
 void RenderWorker::scheduleStep() {
@@ -47,20 +65,28 @@ void RenderWorker::scheduleStep() {
 }
 
 void RenderWorker::step() {
-    if (m_cancel->load()) return;
+    if (m_shared->cancel.load()) return;
     if (m_pending && !startPendingJob()) return;
     if (!m_session) return;
     if (m_maxSpp > 0 && m_session->samplesPerPixel() >= m_maxSpp) return; // idle until a new job
 
-    if (auto status = m_session->renderPass(); !status) {
+    const int before = m_session->samplesPerPixel();
+    m_shared->passRunning.store(true);
+    const util::Status status = m_session->renderPass();
+    m_shared->passRunning.store(false);
+    if (!status) {
         fail(toQString(status.error()));
         return;
     }
     const int spp = m_session->samplesPerPixel();
+    if (spp == before) { // interrupted: handle the request, then resume the pass
+        scheduleStep();
+        return;
+    }
     const bool first = m_publishedSpp < 0;
     const bool last = m_maxSpp > 0 && spp >= m_maxSpp;
     const bool due = m_sinceFrame.elapsed() >= kFrameIntervalMs &&
-                     m_framesInFlight->load() < kMaxFramesInFlight;
+                     m_shared->framesInFlight.load() < kMaxFramesInFlight;
     if (first || last || due) publish();
     if (!last) scheduleStep();
 }
@@ -71,6 +97,7 @@ bool RenderWorker::startPendingJob() {
     m_generation = job.generation;
     m_maxSpp = job.maxSamplesPerPixel;
     m_publishedSpp = -1;
+    m_lastFrame = RenderFrame{};
     if (!job.scene) {
         m_session.reset();
         return false;
@@ -97,6 +124,7 @@ bool RenderWorker::startPendingJob() {
         return false;
     }
     m_session = std::move(created.value());
+    m_session->setInterruptCheck([this] { return interrupted(); });
     m_sessionOptions = job.options;
     return true;
 }
@@ -115,9 +143,16 @@ void RenderWorker::publish() {
     frame.deviceName = QString::fromStdString(stats.deviceName);
     frame.validationMessages = stats.validationMessages;
     frame.generation = m_generation;
+    frame.displayExposureEv = m_shared->exposureEv.load();
+    frame.display = toneMap(*frame.image, frame.displayExposureEv);
     m_publishedSpp = frame.samplesPerPixel;
     m_sinceFrame.restart();
-    m_framesInFlight->fetch_add(1);
+    emitFrame(std::move(frame));
+}
+
+void RenderWorker::emitFrame(RenderFrame frame) {
+    m_lastFrame = frame; // shares the images
+    m_shared->framesInFlight.fetch_add(1);
     emit frameReady(std::move(frame));
 }
 
@@ -125,6 +160,7 @@ void RenderWorker::fail(const QString& message) {
     // A failed session is in an unknown state (device lost, bad scene): drop it; the next job
     // creates a fresh one.
     m_session.reset();
+    m_lastFrame = RenderFrame{};
     emit failed(message, m_generation);
 }
 

@@ -17,7 +17,11 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
 
 void ViewportWidget::showFrame(const RenderFrame& frame) {
     m_frame = frame;
-    m_display = frame.image ? toneMap(*frame.image, m_exposureEv) : QImage();
+    m_display = frame.display;
+    if (m_display.isNull() && frame.image) { // a frame made without its display form
+        m_display = toneMap(*frame.image, m_exposureEv);
+        m_frame.displayExposureEv = m_exposureEv;
+    }
     update();
 }
 
@@ -30,8 +34,7 @@ void ViewportWidget::clear() {
 void ViewportWidget::setExposure(float ev) {
     if (ev == m_exposureEv) return;
     m_exposureEv = ev;
-    if (m_frame.image) m_display = toneMap(*m_frame.image, m_exposureEv);
-    update();
+    emit exposureChanged(ev);
 }
 
 void ViewportWidget::paintEvent(QPaintEvent*) {
