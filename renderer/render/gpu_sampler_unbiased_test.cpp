@@ -45,7 +45,12 @@ enum class Lighting { Soft, Sun };
 // error). Measured with 128-512 passes: uniform and cosine reach the r = 0.2 lobe under the
 // studio's small lamps 1e-3 of the time (|z| 4.9 / 12); bsdf finds the one-texel sun through an
 // r >= 0.2 lobe too rarely (|z| 34-40); env puts 99.9% of its draws on the sun and the sky's share
-// of a lobe gets a handful (|z| 5-280). Those cases are judged instead by the twin test
+// of a lobe gets a handful (|z| 5-280). Under the sun even r = 0.02 is not judgeable for bsdf
+// since the `mis` reference does env NEE (issue 20): the sun's glow in the GGX tail around its
+// reflection (directions where the BSDF pdf is < 1e-3) adds 0.00102 to block 1's 0.3867, which NEE
+// resolves and BSDF sampling essentially never reaches (CPU bsdf, 4096 passes, two seeds:
+// 0.38567 +- 0.00004, vs mis 0.38664 +- 0.00005; |z| 6.2 at 128 passes against a reference whose
+// error bar no longer hides it). Those cases are judged instead by the twin test
 // (GpuPathTracer.MatchesCpuReferenceWithTheSameRandomStreams: same numbers, same image as the CPU
 // sampler, whose distribution and pdf pass chi-square in direction_sampler_test.cpp).
 bool judged(SamplerKind kind, Lighting lighting, float roughness) {
@@ -55,7 +60,7 @@ bool judged(SamplerKind kind, Lighting lighting, float roughness) {
     case SamplerKind::Oracle:
         return true;
     case SamplerKind::Bsdf:
-        return lighting == Lighting::Soft || roughness < 0.1f;
+        return lighting == Lighting::Soft;
     case SamplerKind::Env:
         return lighting == Lighting::Soft && roughness > 0.5f;
     case SamplerKind::Uniform:
