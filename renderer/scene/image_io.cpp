@@ -49,16 +49,13 @@ util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) 
         if (!rgb && !grey)
             return makeError(ErrorKind::Unsupported, path, "no R,G,B or Y channels");
 
-        // Read in bands of rows, the image growing as they arrive: a corrupt header stating a huge
-        // data window fails on its first band instead of first allocating the whole image (a few
-        // hundred bytes could cost gigabytes). The image is reserved in full once a band has read.
-        constexpr long long kBandRows = 64;
-        util::ImageRGB image;
-        image.width = int(w);
-        image.height = int(h);
+        // Read in bands of rows (at most 64, at most 2^16 pixels) and the last band first: a corrupt
+        // header stating a huge data window over a few bytes fails there, before the image is
+        // allocated (a 1 KB file could otherwise cost gigabytes), and a band stays small however
+        // wide the image claims to be.
+        const long long bandRows = std::clamp<long long>((1 << 16) / w, 1, 64);
         std::vector<glm::vec3> band;
-        for (long long y0 = dw.min.y; y0 <= dw.max.y; y0 += kBandRows) {
-            const long long y1 = std::min<long long>(y0 + kBandRows - 1, dw.max.y);
+        auto readBand = [&](long long y0, long long y1) {
             band.assign(size_t(w) * size_t(y1 - y0 + 1), glm::vec3(0.0f));
             // Slices address pixel (x, y) of the data window; OpenEXR wants the base pointer
             // shifted so that (dw.min.x, y0) lands on band[0].
@@ -77,7 +74,14 @@ util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) 
             file.readPixels(int(y0), int(y1));
             if (!rgb)
                 for (auto& p : band) p = glm::vec3(p.r);
-            if (image.pixels.empty()) image.pixels.reserve(size_t(w) * size_t(h));
+        };
+        readBand(std::max<long long>(dw.min.y, dw.max.y - bandRows + 1), dw.max.y);
+        util::ImageRGB image;
+        image.width = int(w);
+        image.height = int(h);
+        image.pixels.reserve(size_t(w) * size_t(h));
+        for (long long y0 = dw.min.y; y0 <= dw.max.y; y0 += bandRows) {
+            readBand(y0, std::min<long long>(y0 + bandRows - 1, dw.max.y));
             image.pixels.insert(image.pixels.end(), band.begin(), band.end());
         }
         return image;
