@@ -157,12 +157,12 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
     // Path record helpers (no-ops without a record).
     std::string techniqueOfDir = "camera";
     glm::vec3 fcosOfDir(1.0f), betaBeforeDir(1.0f);
-    auto addEvent = [&](int vertex, const char* kind, const std::string& technique, double pdf,
-                        std::vector<PathPdf> pdfs, double weight, glm::vec3 fcos,
+    auto addEvent = [&](int vertex, const char* eventKind, const std::string& technique,
+                        double pdf, std::vector<PathPdf> pdfs, double weight, glm::vec3 fcos,
                         glm::vec3 radiance, glm::vec3 throughput, glm::vec3 contribution) {
         if (!record || contribution == glm::vec3(0.0f)) return;
-        record->events.push_back(PathEvent{vertex, kind, technique, pdf, std::move(pdfs), weight,
-                                           fcos, radiance, throughput, contribution});
+        record->events.push_back(PathEvent{vertex, eventKind, technique, pdf, std::move(pdfs),
+                                           weight, fcos, radiance, throughput, contribution});
     };
     for (int depth = 0;; ++depth) {
         const int from = depth - 1; // the vertex that drew `dir`
