@@ -1,5 +1,6 @@
 // `wavelit-cli render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]
-//  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]`
+//  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]
+//  [--trace-outliers N --outliers OUT.json]` (the outlier tracer: render/outlier_tracer.h)
 // (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
