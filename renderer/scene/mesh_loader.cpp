@@ -1,7 +1,9 @@
 #include "scene/mesh_loader.h"
 
 #include "scene/load_guard.h"
+#include "util/path_util.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -11,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace wavelit::scene {
@@ -114,6 +117,31 @@ util::Status checkGlbChunks(const std::string& path) {
     return util::okStatus();
 }
 
+// Only the readers of the file's extension may read it. When those decline a file, Assimp asks all
+// of its ~70 importers whether the bytes look like theirs, and some are not safe on arbitrary bytes:
+// a .gltf holding the word "vertexarray" reached the OpenGEX parser, which read past its buffer
+// (fuzz_gltf finding, AddressSanitizer). The others are unregistered from this importer (Assimp then
+// no longer owns them: they are deleted here).
+util::Status keepOnlyReadersOf(Assimp::Importer& importer, const std::string& ext, const std::string& path) {
+    std::vector<Assimp::BaseImporter*> others;
+    size_t readers = 0;
+    for (size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        const aiImporterDesc* info = importer.GetImporterInfo(i);
+        std::istringstream list(info && info->mFileExtensions ? info->mFileExtensions : "");
+        bool reads = false;
+        for (std::string e; list >> e;) reads = reads || "." + e == ext;
+        if (reads)
+            ++readers;
+        else
+            others.push_back(importer.GetImporter(i));
+    }
+    if (readers == 0)
+        return makeError(ErrorKind::Unsupported, path, "cannot read mesh: no mesh reader for '" + ext + "' files");
+    for (Assimp::BaseImporter* other : others)
+        if (importer.UnregisterLoader(other) == aiReturn_SUCCESS) delete other;
+    return util::okStatus();
+}
+
 // Assimp's post-processing asserts (and Debian's build aborts) when a mesh states polygons it does
 // not have: a PLY face list with a stray "[" gave such a mesh and `validate` died with exit 134
 // (fuzz_ply finding). The raw meshes are checked before post-processing sees them.
@@ -147,6 +175,7 @@ util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vecto
     if (auto s = checkPlyHeader(path); !s) return s.error();
     if (auto s = checkGlbChunks(path); !s) return s.error();
     Assimp::Importer importer;
+    if (auto s = keepOnlyReadersOf(importer, util::lowerExtension(path), path); !s) return s.error();
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read without post-processing first: NaN positions must be rejected before the
     // normal generator and vertex joiner see them.

@@ -127,5 +127,24 @@ TEST_F(MeshLoader, MeshStatingPolygonsItDoesNotHaveIsAnError) {
     EXPECT_EQ(quad->triangleCount(), 2u);
 }
 
+// fuzz_gltf finding: a .gltf that the glTF readers declined was offered to every Assimp importer;
+// the OpenGEX parser took it (it holds the word "indexarray") and read past its buffer. Only the
+// readers of the extension see a file now; an extension no reader has is refused.
+TEST_F(MeshLoader, OnlyTheReadersOfTheExtensionSeeTheFile) {
+    const fs::path finding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_gltf/finding_asan_opengex_fallback.gltf";
+    std::ifstream in(finding, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_NE(bytes.find("indexarray"), std::string::npos);
+    auto m = loadMesh(write("opengex_words.gltf", bytes));
+    ASSERT_FALSE(m.ok());
+    EXPECT_NE(m.error().message().find("opengex_words.gltf: cannot read mesh: "), std::string::npos) << m.error().message();
+    // An extension no reader declares is refused before any reader sees the file.
+    auto named = loadMesh(write("words.xyz", "Metric {float {1.0}}\n"));
+    ASSERT_FALSE(named.ok());
+    EXPECT_EQ(named.error().message(), (dir / "words.xyz").string() + ": cannot read mesh: no mesh reader for '.xyz' files");
+    auto upper = loadMesh(write("TRI.OBJ", "v 0 0 0\nv 1 0 0\nv 0 0 -1\nf 1 2 3\n"));
+    ASSERT_TRUE(upper.ok()) << upper.error().message();
+}
+
 } // namespace
 } // namespace wavelit::scene
