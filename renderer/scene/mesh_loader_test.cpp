@@ -107,6 +107,11 @@ TEST_F(MeshLoader, GlbChunksLargerThanTheFileAreRefusedBeforeAllocation) {
     ASSERT_FALSE(chunk.ok());
     EXPECT_NE(chunk.error().reason.find("GLB chunk at byte 12 states 4143972368 bytes (the file has 28 bytes)"), std::string::npos)
         << chunk.error().message();
+    // A header stating fewer bytes than its own header skipped the chunk checks (second finding).
+    auto tiny = loadMesh(write("tiny_length.glb", std::string("glTF\x02\0\0\0\x01\0\0\0\0\0\0\x96JSON{\"asset\"", 28)));
+    ASSERT_FALSE(tiny.ok());
+    EXPECT_EQ(tiny.error().message(), (dir / "tiny_length.glb").string() +
+                                          ": cannot read mesh: GLB header states 1 bytes (the file has 28 bytes)");
     auto seed = loadMesh(std::string(WAVELIT_TEST_DATA_DIR) + "/../fuzz/corpus/fuzz_gltf/triangle.glb");
     ASSERT_TRUE(seed.ok()) << seed.error().message();
     EXPECT_EQ(seed->triangleCount(), 1u);
