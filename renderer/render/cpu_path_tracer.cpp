@@ -238,9 +238,13 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             const float uSelect = rng.nextFloat();
             const float ul1 = rng.nextFloat();
             const float ul2 = rng.nextFloat();
-            const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2);
+            PathEvent lightEvent;
+            const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2,
+                                          vertex ? &lightEvent : nullptr);
             L += beta * e;
-            addEvent(depth, "light-nee", "light", 0.0, {}, 1.0, glm::vec3(1.0f), e, beta, beta * e);
+            addEvent(depth, "light-nee", lightEvent.technique, lightEvent.pdf,
+                     std::move(lightEvent.misPdfs), lightEvent.weight, lightEvent.fcos,
+                     lightEvent.radiance, beta, beta * e);
         }
 
         if (envNee) {
@@ -346,7 +350,7 @@ std::string CpuPathTracer::samplerReport() const {
 glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                                    const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng,
                                    const glm::vec3& origin, float uSelect, float u1,
-                                   float u2) const {
+                                   float u2, PathEvent* record) const {
     const LightSampler& light = m_lights.light(m_lights.select(uSelect));
     if (m_lightStrategy == LightStrategy::BsdfOnly && !light.isDelta()) return glm::vec3(0.0f);
     const LightSample ls = light.sample(origin, u1, u2);
@@ -362,6 +366,14 @@ glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Fram
         return glm::vec3(0.0f);
     const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, frame, ds, wo, wi);
     const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy);
+    if (record) {
+        record->technique = "light " + std::to_string(m_lights.select(uSelect));
+        record->pdf = ls.pdf * m_lights.selectionProbability();
+        record->misPdfs = {{"light (x selection)", record->pdf}, {"continuation", bsdfPdf}};
+        record->weight = w;
+        record->fcos = f * wi.z;
+        record->radiance = ls.value;
+    }
     return f * ls.value * (wi.z * w / (ls.pdf * m_lights.selectionProbability()));
 }
 

@@ -118,10 +118,12 @@ private:
                      const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& wi) const;
     // Next-event estimation from `origin` (the offset hit point the continuation ray leaves from):
     // one light chosen by uSelect, sampled with (u1, u2), shadow ray, MIS weight. Radiance
-    // toward the viewer, before the path throughput.
+    // toward the viewer, before the path throughput. With `record`, fills its technique, pdf,
+    // MIS pdfs, weight, f·cos and radiance (the outlier tracer).
     glm::vec3 nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                         const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
-                        float uSelect, float u1, float u2) const;
+                        float uSelect, float u1, float u2,
+                        PathEvent* record = nullptr) const;
 
     // Next-event estimation of DIRECT environment light (issue 20; env, mis, wavelet, oracle):
     // a direction from the vertex's NEE technique `nee` with (u1, u2, u3), a shadow ray, the env's
