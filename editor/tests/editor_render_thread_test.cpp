@@ -5,7 +5,11 @@
 // - destroying the window while a pass runs (a `wavelet` pass at 1.6 MP takes over a minute on
 //   lavapipe) returns within 0.5 s, and so does RenderController::shutdown().
 // Timings are asserted here because they are the feature; each bound has a wide margin over what
-// was measured on a loaded 2-core machine (the figures are printed).
+// was measured on a loaded 2-core machine (the figures are printed; ctest runs this test alone).
+// Measured 2026-12-02 (Release, lavapipe, load average 7 on 2 cores): the UI thread's longest
+// stall 5-8 ms (longest gap with waits for a CPU 12-148 ms, other processes' load); quitting or
+// shutdown() during a wavelet pass 26-52 ms. Before issue 19: tone mapping on the UI thread
+// 24-88 ms a frame, quitting during a pass 78 s (the whole pass).
 #include "app/editor_options.h"
 #include "app/error_reporter.h"
 #include "app/main_window.h"
@@ -14,10 +18,12 @@
 #include "viewport/viewport_widget.h"
 
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFile>
 #include <QTimer>
 #include <QtTest>
 
+#include <functional>
 #include <memory>
 
 using namespace wavelit;
@@ -32,13 +38,17 @@ constexpr int kHeight = 1000;
 constexpr qint64 kMaxUiStallMs = 50;
 constexpr qint64 kMaxQuitMs = 500;
 
-// Nanoseconds this thread has spent runnable but waiting for a CPU (/proc/thread-self/schedstat,
-// second field); -1 where the kernel does not say.
-qint64 runQueueWaitNs() {
+// This thread's nanoseconds on a CPU and runnable but waiting for one
+// (/proc/thread-self/schedstat); -1 where the kernel does not say.
+struct SchedTimes {
+    qint64 onCpuNs = -1, waitNs = -1;
+};
+SchedTimes schedTimes() {
     QFile file("/proc/thread-self/schedstat");
-    if (!file.open(QIODevice::ReadOnly)) return -1;
+    if (!file.open(QIODevice::ReadOnly)) return {};
     const QList<QByteArray> fields = file.readAll().split(' ');
-    return fields.size() >= 2 ? fields[1].toLongLong() : -1;
+    if (fields.size() < 2) return {};
+    return {fields[0].toLongLong(), fields[1].toLongLong()};
 }
 
 // Longest gap between the ticks of a 5 ms timer on the UI thread: how long the thread was busy
@@ -51,35 +61,58 @@ public:
         connect(&m_timer, &QTimer::timeout, this, [this] {
             const qint64 gapNs = m_sinceTick.nsecsElapsed();
             m_sinceTick.restart();
-            const qint64 wait = runQueueWaitNs();
-            const qint64 waitedNs = wait >= 0 && m_lastWaitNs >= 0 ? wait - m_lastWaitNs : 0;
-            m_lastWaitNs = wait;
+            const SchedTimes now = schedTimes();
+            const bool known = now.waitNs >= 0 && m_last.waitNs >= 0;
+            const qint64 waitedNs = known ? now.waitNs - m_last.waitNs : 0;
+            const qint64 cpuNs = known ? now.onCpuNs - m_last.onCpuNs : -1;
+            m_last = now;
             m_maxRawGapMs = std::max(m_maxRawGapMs, gapNs / 1000000);
-            m_maxGapMs = std::max(m_maxGapMs, std::max<qint64>(0, gapNs - waitedNs) / 1000000);
+            const qint64 gapMs = std::max<qint64>(0, gapNs - waitedNs) / 1000000;
+            if (gapMs > m_maxGapMs) {
+                m_maxGapMs = gapMs;
+                m_maxGapCpuMs = cpuNs / 1000000;
+            }
             ++m_ticks;
         });
         m_timer.setTimerType(Qt::PreciseTimer);
     }
     void start() {
-        m_maxGapMs = m_maxRawGapMs = 0;
+        m_maxGapMs = m_maxRawGapMs = m_maxGapCpuMs = 0;
         m_ticks = 0;
-        m_lastWaitNs = runQueueWaitNs();
+        m_last = schedTimes();
         m_sinceTick.start();
         m_timer.start(5);
     }
     void stop() { m_timer.stop(); }
     qint64 maxGapMs() const { return m_maxGapMs; }
     qint64 maxRawGapMs() const { return m_maxRawGapMs; }
+    qint64 maxGapCpuMs() const { return m_maxGapCpuMs; } // of it on a CPU (-1: unknown)
     int ticks() const { return m_ticks; }
 
 private:
     QTimer m_timer;
     QElapsedTimer m_sinceTick;
-    qint64 m_lastWaitNs = -1;
+    SchedTimes m_last;
     qint64 m_maxGapMs = 0;
+    qint64 m_maxGapCpuMs = 0;
     qint64 m_maxRawGapMs = 0;
     int m_ticks = 0;
 };
+
+// Runs the event loop, as the application's does, until `done` holds or timeoutMs passes. (QTRY_*
+// and QTest::qWait sleep up to 10 ms between event-processing passes: a stall of the test's own.)
+bool spinUntil(const std::function<bool()>& done, int timeoutMs) {
+    if (done()) return true;
+    QEventLoop loop;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (done()) loop.quit();
+    });
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    poll.start(1);
+    loop.exec();
+    return done();
+}
 
 RenderSettings largeSettings(render::SamplerKind sampler) {
     RenderSettings settings;
@@ -137,16 +170,19 @@ void EditorRenderThreadTest::uiThreadStallsStayShortAt1600x1000() {
     // Three new frames, each followed by two exposure changes (Display edits through the
     // document, as the toolbar's exposure actions make them).
     for (int round = 0; round < 3; ++round) {
-        QTRY_VERIFY_WITH_TIMEOUT(viewport->displayedSamplesPerPixel() > lastSpp || window.errors()->count() > 0,
-                                 kRenderTimeoutMs);
+        QVERIFY(spinUntil([&] { return viewport->displayedSamplesPerPixel() > lastSpp || window.errors()->count() > 0; },
+                          kRenderTimeoutMs));
         QVERIFY2(window.errors()->count() == 0, qPrintable(window.errors()->lastMessage()));
         lastSpp = viewport->displayedSamplesPerPixel();
         ++frames;
+        // The frame's own display image, made on the render thread: nothing re-mapped here.
+        QCOMPARE(viewport->displayedImage().cacheKey(), renderer->latestFrame().display.cacheKey());
         for (int step = 0; step < 2; ++step) {
             const float ev = baseEv + (step == 0 ? 1.0f : -0.5f) * float(round + 1);
             QVERIFY(window.document()->setExposure(ev).ok());
             QCOMPARE(viewport->exposure(), ev);
-            QTRY_COMPARE_WITH_TIMEOUT(viewport->displayedExposure(), ev, kRenderTimeoutMs);
+            QVERIFY(spinUntil([&] { return viewport->displayedExposure() == ev; }, kRenderTimeoutMs));
+            QCOMPARE(viewport->displayedImage().cacheKey(), renderer->latestFrame().display.cacheKey());
             // Re-mapped, not restarted: same render, no samples lost.
             QCOMPARE(renderer->generation(), generation);
             QVERIFY(viewport->displayedSamplesPerPixel() >= lastSpp);
@@ -154,10 +190,10 @@ void EditorRenderThreadTest::uiThreadStallsStayShortAt1600x1000() {
     }
     meter.stop();
     qInfo("%dx%d: %d frames and 6 exposure changes in %.1f s; UI thread's longest stall %lld ms "
-          "(%lld ms with waits for a CPU; %d ticks of 5 ms); tone mapping one frame on the UI "
-          "thread, as before, took %lld ms",
-          kWidth, kHeight, frames, clock.elapsed() / 1000.0, meter.maxGapMs(), meter.maxRawGapMs(),
-          meter.ticks(), toneMapMs);
+          "(%lld ms of it on a CPU; longest gap with waits for a CPU %lld ms; %d ticks of 5 ms); "
+          "tone mapping one frame on the UI thread, as before, took %lld ms",
+          kWidth, kHeight, frames, clock.elapsed() / 1000.0, meter.maxGapMs(), meter.maxGapCpuMs(),
+          meter.maxRawGapMs(), meter.ticks(), toneMapMs);
     QVERIFY2(meter.maxGapMs() <= kMaxUiStallMs,
              qPrintable(QString("the UI thread stalled for %1 ms").arg(meter.maxGapMs())));
 }
