@@ -51,38 +51,87 @@ std::vector<glm::vec3> smoothNormals(const TriangleMesh& m) {
     return n;
 }
 
-// Assimp 5.2's PLY reader (what Debian 12 ships) never returns on a header that lacks its
-// "end_header" line: at the end of the file it reads empty lines forever (fuzz_ply finding). A file
-// Assimp would read as PLY (it starts with "ply" in any case, whatever its extension) is refused
-// here unless a line starts with the token "end_header", as Assimp's header parser looks for it.
+// Size in bytes of a PLY scalar type; 0 for names this check does not know (a lower bound).
+uint64_t plyTypeSize(const std::string& t) {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+}
+
+// Assimp 5.2's PLY reader (what Debian 12 ships) trusts the header it parses (fuzz_ply findings):
+// - without an "end_header" line it never returns (at the end of the file it re-reads its last
+//   line forever), and it only sees a line whole when it follows a '\n' (from any other line end it
+//   skips to the next '\n'), so "end_header" must start a '\n'-separated line;
+// - it loops once per element instance the header states, reading past the end of the file, and
+//   allocates for them: "element vertex 4000000000" in a 300-byte file hung or exhausted memory.
+// A file Assimp would read as PLY (it starts with "ply" in any case) is refused here unless its
+// header ends with such a line and the instances it states fit in what follows: one line each
+// (ascii), or their properties' smallest encoding (binary; a list counts its length field only).
 util::Status checkPlyHeader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const uint64_t size = uint64_t(in.tellg());
+    in.seekg(0);
     char magic[3] = {};
     if (!in.read(magic, 3)) return util::okStatus();
     auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
     if (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y') return util::okStatus();
-    auto lineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
-    const std::string token = "end_header";
-    std::string window = "ply"; // the bytes not yet searched, plus the token's length of overlap
-    std::vector<char> chunk(1 << 16);
-    size_t offset = 0;            // file position of window[0]
-    for (bool more = true; more;) {
-        in.read(chunk.data(), std::streamsize(chunk.size()));
-        const size_t got = size_t(in.gcount());
-        more = got == chunk.size();
-        window.append(chunk.data(), got);
-        for (size_t at = window.find(token); at != std::string::npos; at = window.find(token, at + 1)) {
-            const bool lineStart = offset + at == 0 || (at > 0 && lineEnd(window[at - 1]));
-            const size_t after = at + token.size();
-            if (after == window.size() && more) break; // the next chunk decides
-            const bool tokenEnd = after == window.size() || lineEnd(window[after]) || window[after] == ' ' || window[after] == '\t';
-            if (lineStart && tokenEnd) return util::okStatus();
+    in.seekg(0);
+    auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
+
+    struct Element {
+        uint64_t count = 0, minBytes = 0;
+    };
+    std::vector<Element> elements;
+    std::string format;
+    uint64_t headerBytes = 0;
+    bool ended = false;
+    for (std::string line; !ended && headerBytes < (1u << 20) && std::getline(in, line);) {
+        headerBytes += line.size() + 1;
+        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3)))); // what Assimp sees
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
+            ended = true;
+        } else if (word == "format") {
+            words >> format;
+        } else if (word == "element") {
+            std::string name;
+            long long count = 0;
+            words >> name >> count;
+            elements.push_back({uint64_t(std::max(0LL, count)), 0});
+        } else if (word == "property" && !elements.empty()) {
+            std::string type;
+            words >> type;
+            if (type == "list") words >> type; // the length field; the items may be none
+            elements.back().minBytes += plyTypeSize(type);
         }
-        const size_t keep = std::min(window.size(), token.size() + 1);
-        offset += window.size() - keep;
-        window.erase(0, window.size() - keep);
     }
-    return makeError(ErrorKind::Format, path, "cannot read mesh: PLY header has no 'end_header' line");
+    if (!ended) return bad("header has no 'end_header' line");
+    const uint64_t rest = size - std::min(size, headerBytes);
+    uint64_t instances = 0, minBytes = 0;
+    for (const Element& e : elements) {
+        instances += std::min<uint64_t>(e.count, uint64_t(1) << 40);
+        minBytes += std::min<uint64_t>(e.count, uint64_t(1) << 40) * e.minBytes;
+    }
+    if (format == "ascii") {
+        uint64_t lines = 0;
+        char last = '\n';
+        for (char c; in.get(c);) {
+            lines += c == '\n';
+            last = c;
+        }
+        lines += last != '\n';
+        if (instances > lines)
+            return bad("header states " + std::to_string(instances) + " element instances, but only " +
+                       std::to_string(lines) + " line(s) follow it");
+    } else if (format.rfind("binary", 0) == 0 && minBytes > rest) {
+        return bad("header states elements of at least " + std::to_string(minBytes) + " bytes, but only " +
+                   std::to_string(rest) + " follow it");
+    }
+    return util::okStatus();
 }
 
 // Assimp 5.2's glTF 2 reader allocates a GLB chunk's stated length before reading it: a 29-byte
@@ -144,16 +193,28 @@ util::Status keepOnlyReadersOf(Assimp::Importer& importer, const std::string& ex
     return util::okStatus();
 }
 
-// Assimp's post-processing asserts (and Debian's build aborts) when a mesh states polygons it does
-// not have: a PLY face list with a stray "[" gave such a mesh and `validate` died with exit 134
-// (fuzz_ply finding). The raw meshes are checked before post-processing sees them.
-util::Status checkPrimitiveTypes(const aiScene* raw, const std::string& path) {
+// Assimp's post-processing trusts the faces a reader made, and Assimp 5.2's readers can make faces
+// it cannot handle from malformed files (its own validation lets them through): a mesh stating
+// polygons it does not have made triangulation assert (`validate` aborted, exit 134), and faces
+// without vertices from a garbled PLY face list crashed a later step (SIGBUS, exit 135) — fuzz_ply
+// findings. The raw meshes are checked before post-processing sees them.
+util::Status checkRawMeshes(const aiScene* raw, const std::string& path) {
     for (unsigned mi = 0; mi < raw->mNumMeshes; ++mi) {
         const aiMesh* m = raw->mMeshes[mi];
-        if (!(m->mPrimitiveTypes & aiPrimitiveType_POLYGON)) continue;
         bool polygon = false;
-        for (unsigned f = 0; f < m->mNumFaces && !polygon; ++f) polygon = m->mFaces[f].mNumIndices > 3;
-        if (!polygon)
+        for (unsigned f = 0; f < m->mNumFaces; ++f) {
+            const aiFace& face = m->mFaces[f];
+            if (face.mNumIndices == 0 || !face.mIndices)
+                return makeError(ErrorKind::Format, path, "cannot read mesh: mesh " + std::to_string(mi) + " face " +
+                                                              std::to_string(f) + " has no vertices (malformed face list)");
+            for (unsigned i = 0; i < face.mNumIndices; ++i)
+                if (face.mIndices[i] >= m->mNumVertices)
+                    return makeError(ErrorKind::Format, path, "cannot read mesh: mesh " + std::to_string(mi) + " face " +
+                                                                  std::to_string(f) + " names vertex " + std::to_string(face.mIndices[i]) +
+                                                                  " of " + std::to_string(m->mNumVertices));
+            polygon = polygon || face.mNumIndices > 3;
+        }
+        if ((m->mPrimitiveTypes & aiPrimitiveType_POLYGON) && !polygon)
             return makeError(ErrorKind::Format, path, "cannot read mesh: mesh " + std::to_string(mi) +
                                                           " states polygons but has none (malformed face list)");
     }
@@ -189,7 +250,7 @@ util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vecto
             if (!finite(glm::vec3(m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z)))
                 return makeError(ErrorKind::Invalid, path, "vertex " + std::to_string(v) + " is NaN or infinite");
     }
-    if (auto c = checkPrimitiveTypes(raw, path); !c) return c.error();
+    if (auto c = checkRawMeshes(raw, path); !c) return c.error();
     const aiScene* s = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                                     aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
                                                     aiProcess_SortByPType);

@@ -117,8 +117,9 @@ TEST_F(MeshLoader, GlbChunksLargerThanTheFileAreRefusedBeforeAllocation) {
     EXPECT_EQ(seed->triangleCount(), 1u);
 }
 
-// fuzz_ply finding: a face list with a stray "[" gave Assimp a mesh stating polygons it did not
-// have; its triangulation asserted and `validate` aborted (exit 134).
+// fuzz_ply findings: a face list with a stray "[" gave Assimp a face without vertices in a mesh
+// stating polygons it did not have; its triangulation asserted and `validate` aborted (exit 134);
+// similar faces crashed a later step (SIGBUS). Such raw meshes are refused before post-processing.
 TEST_F(MeshLoader, MeshStatingPolygonsItDoesNotHaveIsAnError) {
     const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
@@ -126,10 +127,31 @@ TEST_F(MeshLoader, MeshStatingPolygonsItDoesNotHaveIsAnError) {
     auto m = loadMesh(write("bracket.ply", header + "[ 0 3 2 1\n"));
     ASSERT_FALSE(m.ok());
     EXPECT_EQ(m.error().message(), (dir / "bracket.ply").string() +
-                                       ": cannot read mesh: mesh 0 states polygons but has none (malformed face list)");
+                                       ": cannot read mesh: mesh 0 face 0 has no vertices (malformed face list)");
     auto quad = loadMesh(write("quad.ply", header + "4 0 3 2 1\n"));
     ASSERT_TRUE(quad.ok()) << quad.error().message();
     EXPECT_EQ(quad->triangleCount(), 2u);
+}
+
+// fuzz_ply findings: headers stating more element instances than the file holds made Assimp loop
+// past the end of the file (hangs) and allocate for them (4 GB); an "end_header" that does not start a
+// line (after a '\r' or '\0') is not seen by Assimp either. Refused before Assimp reads the file.
+TEST_F(MeshLoader, PlyHeadersStatingMoreThanTheFileHoldsAreRefused) {
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 4000000000\nproperty list uchar int vertex_indices\nend_header\n";
+    auto ascii = loadMesh(write("many.ply", head + "0 0 0\n1 0 0\n0 0 -1\n3 0 1 2\n"));
+    ASSERT_FALSE(ascii.ok());
+    EXPECT_EQ(ascii.error().message(), (dir / "many.ply").string() +
+                                           ": cannot read mesh: PLY header states 4000000003 element instances, but only 4 line(s) follow it");
+    std::string binaryHead = head;
+    binaryHead.replace(binaryHead.find("ascii"), 5, "binary_little_endian");
+    auto binary = loadMesh(write("many_binary.ply", binaryHead + std::string(40, '\0')));
+    ASSERT_FALSE(binary.ok());
+    EXPECT_EQ(binary.error().message(), (dir / "many_binary.ply").string() +
+                                            ": cannot read mesh: PLY header states elements of at least 4000000036 bytes, but only 40 follow it");
+    auto hidden = loadMesh(write("hidden_end.ply", "ply\nformat ascii 1.0\ncomment x\rend_header\n"));
+    ASSERT_FALSE(hidden.ok());
+    EXPECT_NE(hidden.error().reason.find("PLY header has no 'end_header' line"), std::string::npos) << hidden.error().message();
 }
 
 // fuzz_gltf finding: a .gltf that the glTF readers declined was offered to every Assimp importer;
