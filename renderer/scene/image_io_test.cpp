@@ -132,6 +132,16 @@ TEST(ImageIo, HugeHeadersOverTinyFilesFailBeforeAllocatingTheImage) {
                                        << fs::file_size(exr) << " bytes";
 }
 
+// fuzz_exr finding: OpenEXR allocated an attribute's stated size (1.6 GB in a 700-byte file) before
+// reading it. Attribute sizes past the end of the file are refused first.
+TEST(ImageIo, ExrAttributeLargerThanTheFileIsRefused) {
+    const std::string finding = (kFuzzCorpus / "fuzz_exr/finding_slow_huge_attribute.exr").string();
+    auto e = loadImage(finding);
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message().find(finding + ": cannot read EXR: attribute '"), std::string::npos) << e.error().message();
+    EXPECT_NE(e.error().message().find("' states 1701081679 bytes, the file has "), std::string::npos) << e.error().message();
+}
+
 // The band-wise EXR reader against every compression, a tiled mipmapped file, a luminance-only one
 // with an offset data window, and an image taller than one band.
 TEST(ImageIo, ExrReadsEveryCompressionAndImagesOfManyBands) {

@@ -9,6 +9,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -168,6 +169,40 @@ util::Status checkGlbChunks(const std::string& path) {
     return util::okStatus();
 }
 
+// Assimp 5.2's glTF 2 reader dereferences a null accessor for a primitive without a POSITION
+// attribute drawn as lines (fuzz_gltf finding: SEGV). Such a primitive has no geometry to load, so a
+// glTF (.gltf, or the JSON chunk of a .glb) any of whose primitives lacks POSITION is refused here.
+// JSON the check cannot parse is left to Assimp, which reports it.
+util::Status checkGltfPrimitives(const std::string& path, const std::string& ext) {
+    if (ext != ".gltf" && ext != ".glb") return util::okStatus();
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (ext == ".glb" || text.rfind("glTF", 0) == 0) { // the first chunk, when it is JSON
+        if (text.size() < 20 || text.compare(16, 4, "JSON") != 0) return util::okStatus();
+        const uint32_t length = uint32_t(uint8_t(text[12])) | uint32_t(uint8_t(text[13])) << 8 |
+                                uint32_t(uint8_t(text[14])) << 16 | uint32_t(uint8_t(text[15])) << 24;
+        text = text.substr(20, length);
+    }
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return util::okStatus();
+    const auto meshes = doc.find("meshes");
+    if (meshes == doc.end() || !meshes->is_array()) return util::okStatus();
+    for (size_t m = 0; m < meshes->size(); ++m) {
+        const nlohmann::json& mesh = (*meshes)[m];
+        const auto primitives = mesh.is_object() ? mesh.find("primitives") : mesh.end();
+        if (!mesh.is_object() || primitives == mesh.end() || !primitives->is_array()) continue;
+        for (size_t p = 0; p < primitives->size(); ++p) {
+            const nlohmann::json& primitive = (*primitives)[p];
+            const auto attributes = primitive.is_object() ? primitive.find("attributes") : primitive.end();
+            if (!primitive.is_object() || attributes == primitive.end() || !attributes->is_object() ||
+                !attributes->contains("POSITION"))
+                return makeError(ErrorKind::Format, path, "cannot read mesh: glTF mesh " + std::to_string(m) + " primitive " +
+                                                              std::to_string(p) + " has no POSITION attribute");
+        }
+    }
+    return util::okStatus();
+}
+
 // Only the readers of the file's extension may read it. When those decline a file, Assimp asks all
 // of its ~70 importers whether the bytes look like theirs, and some are not safe on arbitrary bytes:
 // a .gltf holding the word "vertexarray" reached the OpenGEX parser, which read past its buffer
@@ -237,6 +272,7 @@ util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vecto
     if (!std::filesystem::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such mesh file");
     if (auto s = checkPlyHeader(path); !s) return s.error();
     if (auto s = checkGlbChunks(path); !s) return s.error();
+    if (auto s = checkGltfPrimitives(path, util::lowerExtension(path)); !s) return s.error();
     Assimp::Importer importer;
     if (auto s = keepOnlyReadersOf(importer, util::lowerExtension(path), path); !s) return s.error();
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

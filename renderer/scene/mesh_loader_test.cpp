@@ -154,6 +154,21 @@ TEST_F(MeshLoader, PlyHeadersStatingMoreThanTheFileHoldsAreRefused) {
     EXPECT_NE(hidden.error().reason.find("PLY header has no 'end_header' line"), std::string::npos) << hidden.error().message();
 }
 
+// fuzz_gltf finding: a primitive without POSITION drawn as a line loop made Assimp dereference a
+// null accessor (SEGV). A primitive without POSITION has no geometry: the file is refused.
+TEST_F(MeshLoader, GltfPrimitiveWithoutPositionIsRefused) {
+    const fs::path seed = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_gltf/triangle_embedded.gltf";
+    std::ifstream in(seed, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(loadMesh(write("ok.gltf", text)).ok());
+    text.replace(text.find("\"POSITION\""), 10, "\"POPITION\"");
+    text.replace(text.find("\"mode\":4"), 8, "\"mode\":2");
+    auto m = loadMesh(write("no_position.gltf", text));
+    ASSERT_FALSE(m.ok());
+    EXPECT_EQ(m.error().message(), (dir / "no_position.gltf").string() +
+                                       ": cannot read mesh: glTF mesh 0 primitive 0 has no POSITION attribute");
+}
+
 // fuzz_gltf finding: a .gltf that the glTF readers declined was offered to every Assimp importer;
 // the OpenGEX parser took it (it holds the word "indexarray") and read past its buffer. Only the
 // readers of the extension see a file now; an extension no reader has is refused.
