@@ -80,6 +80,7 @@ private slots:
     void missingSceneShowsErrorNamingFile();
     void corruptSceneShowsErrorNamingFile();
     void renderDeviceFailureShowsError();
+    void renderTooLargeShowsError();
     void panelEditRestartsRenderAndUndoes();
     void openingAnotherSceneReplacesRender();
     void saveAsWritesLoadableScene();
@@ -224,6 +225,28 @@ void EditorWindowTest::renderDeviceFailureShowsError() {
     const QString text = window.errors()->currentDialog()->text();
     QVERIFY2(text.contains("no-such-gpu-for-editor-test"), qPrintable(text));
     QVERIFY(window.document()->scene()); // the scene itself loaded fine
+    QCOMPARE(window.viewport()->displayedSamplesPerPixel(), 0);
+    QCOMPARE(window.findChild<QLabel*>("renderStatus")->text(), QString("render failed"));
+}
+
+void EditorWindowTest::renderTooLargeShowsError() {
+    // A render size beyond the device's storage-buffer range (lavapipe: 128 MiB; 16384^2 needs a
+    // 4 GiB accumulation buffer) is refused up front on the render thread (render_limits.h): the
+    // dialog names the size, the limit and what to do; the scene stays open, nothing rendered.
+    RenderSettings settings = testSettings();
+    settings.device = render::DeviceChoice::Vulkan;
+    settings.width = 16384;
+    settings.height = 16384;
+    MainWindow window(settings);
+    window.show();
+    window.document()->open(defaultScenePath());
+    QTRY_VERIFY_WITH_TIMEOUT(window.errors()->currentDialog() != nullptr, kRenderTimeoutMs);
+    const QString text = window.errors()->currentDialog()->text();
+    QVERIFY2(text.contains("the render size 16384x16384 is too big for"), qPrintable(text));
+    QVERIFY2(text.contains("storage-buffer limit of") && text.contains("maxStorageBufferRange"),
+             qPrintable(text));
+    QVERIFY2(text.contains("render at a smaller size"), qPrintable(text));
+    QVERIFY(window.document()->scene()); // the scene stays open
     QCOMPARE(window.viewport()->displayedSamplesPerPixel(), 0);
     QCOMPARE(window.findChild<QLabel*>("renderStatus")->text(), QString("render failed"));
 }

@@ -3,6 +3,7 @@
 #include "render/gpu_sampler_data.h"
 #include "render/gpu_scene_data.h"
 #include "render/integrator_factory.h"
+#include "render/render_limits.h"
 #include "util/log.h"
 #include "util/timer.h"
 #include "vk/buffer.h"
@@ -57,6 +58,47 @@ std::string envOr(const char* name, const char* fallback) {
     return v && *v ? v : fallback;
 }
 
+// The buffers of a scene in upload order (bindings kParams..kLights, then with samplers
+// kEnvTable, kSamplerMaterials, kSamplerWords), sized as uploadScene creates them, each with what
+// the user can change to make it smaller (render_limits.h).
+std::vector<GpuBufferPlan> sceneBufferPlans(const GpuSceneData& d, const scene::Bvh& bvh,
+                                            const GpuSamplerData* samplers) {
+    const std::string meshes =
+        "the scene's meshes (" + std::to_string(bvh.triangles.size()) + " triangles)";
+    const std::string fewerTriangles = "use fewer triangles (simpler or fewer meshes)";
+    const std::string envSize =
+        std::to_string(d.params.envSize[0]) + "x" + std::to_string(d.params.envSize[1]);
+    const std::string env = "the environment map (" + envSize + ")";
+    const std::string smallerEnv = "use a smaller environment map";
+    std::vector<GpuBufferPlan> plans = {
+        {"params", sizeof(d.params), 0, "", "the scene parameters", ""},
+        {"bvh nodes", bvh.nodes.size() * sizeof(scene::BvhNode), bvh.nodes.size(), "BVH nodes",
+         meshes, fewerTriangles},
+        {"bvh triangles", bvh.triangles.size() * sizeof(scene::BvhTriangle), bvh.triangles.size(),
+         "triangles", meshes, fewerTriangles},
+        {"materials", d.materials.size() * sizeof(GpuMaterial), d.materials.size(), "materials",
+         "the scene's materials", "use fewer materials"},
+        {"environment", d.envTexels.size() * sizeof(float), d.envTexels.size() / 3, "texels", env,
+         smallerEnv},
+        {"lights", d.lights.size() * sizeof(GpuLight), d.lights.size(), "lights",
+         "the scene's analytic lights", "use fewer lights"},
+    };
+    if (samplers) {
+        plans.push_back({"env sampling table",
+                         samplers->envNodes.size() * sizeof(samplers->envNodes[0]),
+                         samplers->envNodes.size(), "nodes",
+                         "the sampling table of the environment map (" + envSize + ")", smallerEnv});
+        plans.push_back({"sampler materials",
+                         samplers->materials.size() * sizeof(GpuSamplerMaterial),
+                         samplers->materials.size(), "materials", "the scene's materials",
+                         "use fewer materials"});
+        plans.push_back({"sampler tables", samplers->words.size() * sizeof(uint32_t),
+                         samplers->words.size(), "words", "the materials' sampling tables",
+                         "use a smaller environment map or fewer materials, or the bsdf sampler"});
+    }
+    return plans;
+}
+
 class GpuPathTracer final : public Integrator {
 public:
     static util::Result<std::unique_ptr<Integrator>>
@@ -85,6 +127,9 @@ private:
     // the previous scene stays intact. No dispatch is in flight (renderPass waits).
     util::Status uploadScene(const scene::Scene& scene, const scene::Bvh& bvh);
     bool usesDirectionSamplers() const { return m_options.sampler != SamplerKind::Bsdf; }
+    // Checks the accumulation buffer and `buffers` against the device's limits before any of
+    // them is allocated (render_limits.h).
+    util::Status checkPlan(std::vector<GpuBufferPlan> buffers) const;
     // A pass is cut into tiles of kTileGroups x kTileGroups workgroups (16 x 16 pixels), taken
     // in a scattered order (tile i of the order is i * stride mod count) so that every piece
     // samples the whole image: a piece's cost then follows its tile count, whereas runs in
@@ -140,6 +185,18 @@ util::Result<vk::Buffer> GpuPathTracer::upload(const void* data, size_t bytes,
     return buffer;
 }
 
+util::Status GpuPathTracer::checkPlan(std::vector<GpuBufferPlan> buffers) const {
+    GpuMemoryPlan plan;
+    plan.width = m_options.width;
+    plan.height = m_options.height;
+    plan.workgroupWidth = kWorkgroupX;
+    plan.workgroupHeight = kWorkgroupY;
+    plan.buffers.push_back(gpuAccumulationPlan(m_options.width, m_options.height));
+    for (auto& b : buffers)
+        plan.buffers.push_back(std::move(b));
+    return checkGpuMemoryPlan(plan, gpuDeviceLimits(*m_context));
+}
+
 util::Result<std::unique_ptr<Integrator>>
 GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
                       std::shared_ptr<const scene::Bvh> bvh, const RenderOptions& options) {
@@ -150,7 +207,8 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_timings.bvhBuildSeconds = pt->m_bvh->buildSeconds;
 
     // Fail on an unsupported material before any device work.
-    if (auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options); !packed)
+    auto packed = packGpuScene(*pt->m_scene, *pt->m_bvh, options);
+    if (!packed)
         return packed.error();
 
     util::Timer timer;
@@ -168,7 +226,13 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
                   std::to_string(int(timer.milliseconds())) + " ms)");
     timer.restart();
 
-    // Pipeline first: a shader error is the likeliest failure and should not wait for uploads.
+    // Limits first: a render size or a scene the device cannot hold is refused before the
+    // pipeline is compiled and before anything is allocated (the sampler tables, built later,
+    // are checked in uploadScene, again before any allocation).
+    if (auto fits = pt->checkPlan(sceneBufferPlans(*packed, *pt->m_bvh, nullptr)); !fits)
+        return fits.error();
+
+    // Pipeline next: a shader error is the likeliest failure and should not wait for uploads.
     vk::ShaderCompileOptions compile{{gpuShaderDirectory(), gpuPluginDirectory()},
                                      {"WAVELIT_WORKGROUP_X=" + std::to_string(kWorkgroupX),
                                       "WAVELIT_WORKGROUP_Y=" + std::to_string(kWorkgroupY)}};
@@ -196,16 +260,18 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_timings.pipelineSeconds = timer.seconds();
 
     timer.restart();
-    auto accumulation =
-        pt->upload(nullptr, size_t(options.width) * size_t(options.height) * 4 * sizeof(float),
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "accumulation");
+    // The scene first: uploadScene checks the whole plan (accumulation included) before it
+    // allocates anything.
+    auto uploaded = pt->uploadScene(*pt->m_scene, *pt->m_bvh);
+    if (!uploaded)
+        return uploaded.error();
+    const GpuBufferPlan accumulationPlan = gpuAccumulationPlan(options.width, options.height);
+    auto accumulation = pt->upload(nullptr, accumulationPlan.bytes,
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, accumulationPlan.name);
     if (!accumulation)
         return accumulation.error();
     pt->m_accumulation = std::move(accumulation.value());
     pt->m_kernel.bind(kAccumulation, pt->m_accumulation);
-    auto uploaded = pt->uploadScene(*pt->m_scene, *pt->m_bvh);
-    if (!uploaded)
-        return uploaded.error();
     pt->m_accumulation.fill(0);
     auto runner = vk::CommandRunner::create(*pt->m_context, "path tracer");
     if (!runner)
@@ -249,6 +315,17 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         }
         std::copy(std::begin(samplerInfo), std::end(samplerInfo), d.params.samplerInfo);
         d.params.samplerEnv[0] = samplerEnvMean;
+    }
+    // The whole plan (the sizes of `uploads` below) is checked before any buffer is created
+    // (render_limits.h). Sampler buffers that stay as they are count toward the total only.
+    {
+        std::vector<GpuBufferPlan> plans =
+            sceneBufferPlans(d, bvh, uploadSamplers ? &samplers : nullptr);
+        if (usesDirectionSamplers() && !uploadSamplers)
+            for (const vk::Buffer* kept : {&m_envTable, &m_samplerMaterials, &m_samplerWords})
+                plans.push_back({"kept sampler buffer", kept->size(), 0, "", "", ""});
+        if (auto fits = checkPlan(std::move(plans)); !fits)
+            return fits.error();
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     struct Upload {
@@ -342,7 +419,7 @@ util::Status GpuPathTracer::renderPass() {
         count = std::min(count, tiles.count - m_nextTile);
         util::Timer timer;
         if (auto status = dispatchPiece(tiles, m_nextTile, count, push); !status)
-            return status;
+            return describePassError(status.error(), m_context->deviceName());
         const double seconds = timer.seconds();
         const double perTile = seconds / double(count);
         m_secondsPerTile = m_secondsPerTile > 0.0 ? 0.5 * (m_secondsPerTile + perTile) : perTile;

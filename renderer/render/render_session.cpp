@@ -1,17 +1,29 @@
 // RenderSession: scene copy + BVH + one integrator picked by RenderOptions::device.
 // Auto prefers Vulkan and falls back to the CPU reference tracer only when the Vulkan tracer
 // cannot serve the options (no usable device, a sampler not on the GPU yet: errors naming no file);
-// a broken shader is reported, never hidden behind a silent CPU fallback (architecture.md §9: no silent
+// a broken shader or a request beyond the device's limits (render_limits.h) is reported, never
+// hidden behind a silent CPU fallback (architecture.md §9: no silent
 // fallbacks that draw a different image).
 #include "render/render_session.h"
 
 #include "render/integrator_factory.h"
+#include "render/render_limits.h"
 #include "scene/bvh.h"
 #include "util/log.h"
 #include "util/timer.h"
 
 namespace wavelit::render {
 namespace {
+
+// The CPU tracer's image buffers must fit the machine's memory (render_limits.h): refused up
+// front instead of the process being killed while it allocates.
+util::Result<std::unique_ptr<Integrator>> makeCpuIntegrator(std::shared_ptr<const scene::Scene> scene,
+                                                            std::shared_ptr<const scene::Bvh> bvh,
+                                                            const RenderOptions& options) {
+    if (auto fits = checkCpuImageMemory(options.width, options.height, physicalMemoryBytes()); !fits)
+        return fits.error();
+    return createCpuPathTracer(std::move(scene), std::move(bvh), options);
+}
 
 util::Result<std::unique_ptr<Integrator>> makeIntegrator(std::shared_ptr<const scene::Scene> scene,
                                                          std::shared_ptr<const scene::Bvh> bvh,
@@ -20,16 +32,18 @@ util::Result<std::unique_ptr<Integrator>> makeIntegrator(std::shared_ptr<const s
     case DeviceChoice::Vulkan:
         return createGpuPathTracer(scene, bvh, options);
     case DeviceChoice::Cpu:
-        return createCpuPathTracer(scene, bvh, options);
+        return makeCpuIntegrator(scene, bvh, options);
     case DeviceChoice::Auto:
         break;
     }
     auto gpu = createGpuPathTracer(scene, bvh, options);
-    if (gpu || !gpu.error().file.empty())
+    // A request beyond the device's limits (render_limits.h: ErrorKind::Invalid) is reported with
+    // what to change, not moved to the CPU tracer at a size the device could not hold.
+    if (gpu || !gpu.error().file.empty() || gpu.error().kind == util::ErrorKind::Invalid)
         return gpu;
     util::logWarning("Vulkan path tracer unavailable (" + gpu.error().message() +
                      "); rendering on the CPU reference tracer");
-    return createCpuPathTracer(scene, bvh, options);
+    return makeCpuIntegrator(scene, bvh, options);
 }
 
 } // namespace
