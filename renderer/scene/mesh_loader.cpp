@@ -183,6 +183,10 @@ util::Status checkGltfPrimitives(const std::string& path, const std::string& ext
                                 uint32_t(uint8_t(text[14])) << 16 | uint32_t(uint8_t(text[15])) << 24;
         text = text.substr(20, length);
     }
+    // Assimp's JSON parser passes bytes that are not UTF-8, nlohmann's refuses them: they can only
+    // matter inside strings, so they become '?' for this check (the finding held such a byte).
+    for (char& c : text)
+        if (uint8_t(c) >= 0x80) c = '?';
     const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return util::okStatus();
     const auto meshes = doc.find("meshes");

@@ -167,6 +167,13 @@ TEST_F(MeshLoader, GltfPrimitiveWithoutPositionIsRefused) {
     ASSERT_FALSE(m.ok());
     EXPECT_EQ(m.error().message(), (dir / "no_position.gltf").string() +
                                        ": cannot read mesh: glTF mesh 0 primitive 0 has no POSITION attribute");
+    // The finding itself: the same, with a byte that is not UTF-8 inside a string.
+    const fs::path finding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_gltf/finding_segv_line_loop_without_position.gltf";
+    const std::string path = (dir / "finding.gltf").string();
+    fs::copy_file(finding, path);
+    auto f = loadMesh(path);
+    ASSERT_FALSE(f.ok());
+    EXPECT_EQ(f.error().message(), path + ": cannot read mesh: glTF mesh 0 primitive 0 has no POSITION attribute");
 }
 
 // fuzz_gltf finding: a .gltf that the glTF readers declined was offered to every Assimp importer;
