@@ -67,17 +67,21 @@ uint64_t plyTypeSize(const std::string& t) {
 //   skips to the next '\n'), so "end_header" must start a '\n'-separated line;
 // - it loops once per element instance the header states, reading past the end of the file, and
 //   allocates for them: "element vertex 4000000000" in a 300-byte file hung or exhausted memory.
-// A file Assimp would read as PLY (it starts with "ply" in any case) is refused here unless its
+// A file Assimp would read as PLY (a .ply, or one starting with "ply" in any case) is refused unless its
 // header ends with such a line and the instances it states fit in what follows: one line each
 // (ascii), or their properties' smallest encoding (binary; a list counts its length field only).
-util::Status checkPlyHeader(const std::string& path) {
+util::Status checkPlyHeader(const std::string& path, const std::string& ext) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const uint64_t size = uint64_t(in.tellg());
     in.seekg(0);
     char magic[3] = {};
-    if (!in.read(magic, 3)) return util::okStatus();
+    in.read(magic, 3);
     auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
-    if (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y') return util::okStatus();
+    // A .ply goes to Assimp's PLY reader whatever it starts with (it skips leading line ends: a
+    // file starting "\nply" without end_header hung it, fuzz_ply finding).
+    if (ext != ".ply" && (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y'))
+        return util::okStatus();
+    in.clear();
     in.seekg(0);
     auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
 
@@ -102,7 +106,12 @@ util::Status checkPlyHeader(const std::string& path) {
             std::string name;
             long long count = 0;
             words >> name >> count;
-            elements.push_back({uint64_t(std::max(0LL, count)), 0});
+            // Assimp reads the count where an unknown name starts with digits ("element 4444...4vertex 4":
+            // fuzz_ply finding), as a 32-bit value that wraps: that reading counts too.
+            uint32_t fromName = 0;
+            for (size_t i = 0; i < name.size() && name[i] >= '0' && name[i] <= '9'; ++i)
+                fromName = fromName * 10u + uint32_t(name[i] - '0');
+            elements.push_back({std::max<uint64_t>(uint64_t(std::max(0LL, count)), fromName), 0});
         } else if (word == "property" && !elements.empty()) {
             std::string type;
             words >> type;
@@ -274,7 +283,7 @@ namespace {
 util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vector<std::string>* warnings) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such mesh file");
-    if (auto s = checkPlyHeader(path); !s) return s.error();
+    if (auto s = checkPlyHeader(path, util::lowerExtension(path)); !s) return s.error();
     if (auto s = checkGlbChunks(path); !s) return s.error();
     if (auto s = checkGltfPrimitives(path, util::lowerExtension(path)); !s) return s.error();
     Assimp::Importer importer;

@@ -149,6 +149,14 @@ TEST_F(MeshLoader, PlyHeadersStatingMoreThanTheFileHoldsAreRefused) {
     ASSERT_FALSE(binary.ok());
     EXPECT_EQ(binary.error().message(), (dir / "many_binary.ply").string() +
                                             ": cannot read mesh: PLY header states elements of at least 4000000036 bytes, but only 40 follow it");
+    auto digits = loadMesh(write("digit_name.ply", "ply\nformat ascii 1.0\nelement 44444444444444vertex 4\nproperty float x\n"
+                                                  "end_header\n0\n1\n2\n3\n"));
+    ASSERT_FALSE(digits.ok());
+    EXPECT_NE(digits.error().reason.find("PLY header states 122865436 element instances, but only 4 line(s) follow it"),
+              std::string::npos) << digits.error().message();
+    auto leading = loadMesh(write("leading_newline.ply", "\nply\nformat ascii 1.0\nelement vertex 3\n"));
+    ASSERT_FALSE(leading.ok());
+    EXPECT_NE(leading.error().reason.find("PLY header has no 'end_header' line"), std::string::npos) << leading.error().message();
     auto hidden = loadMesh(write("hidden_end.ply", "ply\nformat ascii 1.0\ncomment x\rend_header\n"));
     ASSERT_FALSE(hidden.ok());
     EXPECT_NE(hidden.error().reason.find("PLY header has no 'end_header' line"), std::string::npos) << hidden.error().message();
