@@ -1,8 +1,8 @@
 // No crash loses work (issue 15), on the real editor (offscreen): edits are autosaved to a recovery
 // file; a window that dies without saving leaves it; the next window that opens the scene offers
 // it, and recovering restores the edits — referenced lighting still referenced, the document
-// modified — while saving or discarding removes it. A save into a folder that vanished reports the
-// error and keeps the edits.
+// modified — while saving or discarding removes it. A save into a folder that vanished, or into a
+// read-only one, reports the error, keeps the edits and leaves the old file byte-identical.
 #include "app/autosave_controller.h"
 #include "app/editor_options.h"
 #include "app/error_reporter.h"
@@ -13,9 +13,12 @@
 #include "scene/scene_io.h"
 
 #include <QJSEngine>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <unistd.h>
 
 using namespace wavelit;
 using namespace wavelit::editor;
@@ -62,6 +65,7 @@ private slots:
     void editsSurviveACrash();
     void discardedRecoveryIsGone();
     void saveIntoVanishedFolderKeepsEdits();
+    void saveIntoReadOnlyFolderKeepsTheOriginal();
 
 private:
     QTemporaryDir m_dir;
@@ -162,6 +166,40 @@ void RecoveryTest::saveIntoVanishedFolderKeepsEdits() {
     QVERIFY(editor.window.document()->isModified());
     QCOMPARE(editor.window.document()->path(), m_scene);
     QVERIFY(!QFileInfo::exists(target));
+}
+
+// A folder nobody may write into. root ignores permission bits, so for root the folder is made
+// immutable (chattr +i, ext4/xfs/btrfs); false where neither works.
+bool makeReadOnly(const QString& folder, bool readOnly) {
+    if (::geteuid() != 0)
+        return QFile::setPermissions(folder, readOnly ? QFileDevice::ReadOwner | QFileDevice::ExeOwner
+                                                      : QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                                                            QFileDevice::ExeOwner);
+    return QProcess::execute("chattr", {readOnly ? "+i" : "-i", folder}) == 0;
+}
+
+void RecoveryTest::saveIntoReadOnlyFolderKeepsTheOriginal() {
+    QVERIFY(QDir(m_dir.path()).mkpath("locked"));
+    const QString folder = m_dir.filePath("locked");
+    const QString path = folder + "/kept.wlscene";
+    Editor editor;
+    QVERIFY(editor.open(m_scene));
+    QVERIFY(editor.api->saveScene(path));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray before = file.readAll();
+    file.close();
+    QVERIFY(editor.api->setProperty("material:chrome", "roughness", QJSValue(0.65)));
+    if (!makeReadOnly(folder, true)) QSKIP("cannot make a read-only folder on this file system");
+    const bool saved = editor.api->save();
+    const QString error = editor.takeError();
+    QVERIFY(makeReadOnly(folder, false));
+    QVERIFY(!saved);
+    QVERIFY2(error.contains("kept.wlscene"), qPrintable(error));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), before); // byte-identical
+    QVERIFY(editor.window.document()->isModified());
+    QCOMPARE(QDir(folder).entryList(QDir::Files), QStringList{"kept.wlscene"}); // no temp left
 }
 
 QTEST_MAIN(RecoveryTest)
