@@ -272,7 +272,7 @@ void main() {
         vec3 wi;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         if (continuationFromSampler) {
-            // The mixture's draw; the estimator divides by its pdf (DESIGN.md §4).
+            // The mixture's draw; the estimator divides by its pdf (architecture.md §4).
             float u3 = pcgFloat(rng);
             vec3 wiWorld;
             if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;

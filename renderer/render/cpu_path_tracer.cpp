@@ -54,7 +54,7 @@ CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     auto materials = resolveMaterials(*scene);
     if (!materials)
         return materials.error();
-    // Tables only for the materials some object uses (DESIGN.md §7).
+    // Tables only for the materials some object uses (architecture.md §7).
     SamplerTablesCache cache;
     auto tables = cache.update(*scene, options.sampler);
     if (!tables)
@@ -327,7 +327,7 @@ CpuPathTracer::ScatterDraw CpuPathTracer::sampleScatter(const ResolvedMaterial& 
         const plugins::BrdfSample s = mat.brdf->sample(mat.params, wo, u1, u2);
         return ScatterDraw{s.wi, s.f, s.pdf, s.valid, "bsdf"};
     }
-    // The estimator divides by the pdf of what was drawn (the mixture's, DESIGN.md §4).
+    // The estimator divides by the pdf of what was drawn (the mixture's, architecture.md §4).
     const DirectionSample d = ds->sample(u1, u2, u3);
     if (!d.valid)
         return ScatterDraw{};

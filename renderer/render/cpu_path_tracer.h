@@ -14,7 +14,7 @@
 // docs/estimator.md "Direction samplers"), in the draw order the Vulkan tracer shares; tables held
 // by a SamplerTablesCache: built at create() for the materials the scene's objects use, and on
 // setScene() rebuilt only where the new scene invalidates them (an object move rebuilds none,
-// DESIGN.md §5). sampleScatter/scatterPdf are the one
+// architecture.md §5). sampleScatter/scatterPdf are the one
 // place that draws the next direction and the one pdf the MIS weights of analytic lights use, so
 // a light hit by a sampled direction is weighted with the pdf of the sampler actually used.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.

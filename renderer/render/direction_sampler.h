@@ -1,4 +1,4 @@
-// Direction samplers for environment lighting at a shading point (issue 6; DESIGN.md §4, §5.B):
+// Direction samplers for environment lighting at a shading point (issue 6; architecture.md §4, §5.B):
 // one interface for every `--sampler` kind, so both tracers draw, weight and report the same way.
 //
 //   uniform  uniform hemisphere around the shading normal        pdf 1/(2 pi)
@@ -83,13 +83,13 @@ bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
 class DirectionSamplerTables {
 public:
     // Builds the env tables and, for kind Wavelet, the product tables of every material
-    // (materials not in the list get none: list only those the scene uses, DESIGN.md §7).
+    // (materials not in the list get none: list only those the scene uses, architecture.md §7).
     static std::shared_ptr<const DirectionSamplerTables>
     build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
           const SamplerEnvironmentOptions& envOptions = {});
 
     // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
-    // change set rebuilds only what it invalidates (DESIGN.md §5): the SamplerEnvironment when
+    // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
     // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
     // intensity, tint) with the same envOptions; a material's MaterialProductTables when, in
     // addition, some previous material has the same plugin and BrdfParams (the tables depend on
