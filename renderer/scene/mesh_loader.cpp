@@ -100,7 +100,7 @@ util::Status checkPlyHeader(const std::string& path, const std::string& ext) {
         words >> word;
         if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
             ended = true;
-        } else if (word == "format") {
+        } else if (word == "format" && format.empty()) { // Assimp takes the first
             words >> format;
         } else if (word == "element") {
             std::string name;
