@@ -9,10 +9,11 @@ bash scripts/build.sh release
 export WAVELIT_VK_VALIDATION=1
 export QT_QPA_PLATFORM=offscreen
 ctest --preset release -j2 "$@"
-# The loaders' libFuzzer harnesses (tests/fuzz/README.md), a few seconds each on their seed corpus:
-# clang + ASan/UBSan in build/fuzz, only the harnesses and the layers they read with.
+# The loaders' libFuzzer harnesses (tests/fuzz/README.md), clang + ASan/UBSan in build/fuzz: here
+# every checked-in corpus input (seeds and every past finding) runs once, a deterministic regression
+# check; `ctest --preset fuzz` mutates for a few seconds each and scripts/fuzz.sh for longer.
 # WAVELIT_SKIP_FUZZ=1 skips them.
 if [ "${WAVELIT_SKIP_FUZZ:-0}" != 1 ]; then
     bash scripts/build.sh fuzz
-    ctest --preset fuzz -j2
+    WAVELIT_FUZZ_REPLAY=1 ctest --preset fuzz -j2
 fi
