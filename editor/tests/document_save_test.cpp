@@ -12,6 +12,7 @@
 #include "panels/outline_panel.h"
 #include "panels/property_panel.h"
 #include "scripting/script_api.h"
+#include "tests/document_test_settings.h"
 
 #include "scene/scene_io.h"
 
@@ -32,17 +33,7 @@ using namespace wavelit::editor;
 
 namespace {
 
-constexpr int kTimeoutMs = 60000;
-
-// A small, cheap render: these tests are about the document, not the image.
-RenderSettings quietSettings() {
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
-    settings.sampler = render::SamplerKind::Bsdf;
-    settings.maxSamplesPerPixel = 1;
-    return settings;
-}
+constexpr int kTimeoutMs = kDocumentTimeoutMs;
 
 QString resource(const QString& relative) {
     return QFileInfo(defaultScenePath()).dir().filePath("../" + relative);
@@ -105,7 +96,7 @@ void DocumentSaveTest::referencedLightingEditsSurviveSaveAs() {
     const QByteArray sharedBefore = digest(sharedSetup);
     QVERIFY(!sharedBefore.isEmpty());
     QTemporaryDir dir;
-    MainWindow window(quietSettings());
+    MainWindow window(documentTestSettings());
     QVERIFY(openAndWait(window, resource("scenes/glossy_sphere.wlscene")));
     SceneDocument* document = window.document();
     QCOMPARE(document->scene()->lightingPath, std::string("../lighting/sun_sky.wllight"));
@@ -158,7 +149,7 @@ void DocumentSaveTest::referencedLightingEditsSurviveSaveAs() {
 
 void DocumentSaveTest::saveWritesSceneAndSetup() {
     QTemporaryDir dir;
-    MainWindow window(quietSettings());
+    MainWindow window(documentTestSettings());
     QVERIFY(openAndWait(window, resource("scenes/glossy_sphere.wlscene")));
     SceneDocument* document = window.document();
     const EntityRef sun{scene::EntityKind::Light, lightNamed(*document->scene(), "sun")->id};
@@ -197,7 +188,7 @@ void DocumentSaveTest::saveWritesSceneAndSetup() {
 }
 
 void DocumentSaveTest::separateEditsUndoAloneAndADragUndoesWhole() {
-    MainWindow window(quietSettings());
+    MainWindow window(documentTestSettings());
     QVERIFY(openAndWait(window, resource("scenes/glossy_sphere.wlscene")));
     SceneDocument* document = window.document();
     QUndoStack* undo = document->undoStack();
@@ -245,7 +236,7 @@ void DocumentSaveTest::separateEditsUndoAloneAndADragUndoesWhole() {
 }
 
 void DocumentSaveTest::entitiesByKindAndName() {
-    MainWindow window(quietSettings());
+    MainWindow window(documentTestSettings());
     QVERIFY(openAndWait(window, resource("scenes/glossy_sphere.wlscene")));
     Script script(&window);
     // glossy_sphere has a material and an object both called "ground".
@@ -272,7 +263,7 @@ void DocumentSaveTest::entitiesByKindAndName() {
 
 void DocumentSaveTest::modifiedMarkerAndSaveChangesPrompt() {
     QTemporaryDir dir;
-    auto window = std::make_unique<MainWindow>(quietSettings());
+    auto window = std::make_unique<MainWindow>(documentTestSettings());
     window->show();
     QVERIFY(openAndWait(*window, resource("scenes/glossy_sphere.wlscene")));
     Script script(window.get());
@@ -308,7 +299,7 @@ void DocumentSaveTest::modifiedMarkerAndSaveChangesPrompt() {
     QCOMPARE(prompt->timesAsked(), 2);
 
     // "discard" closes without writing.
-    auto second = std::make_unique<MainWindow>(quietSettings());
+    auto second = std::make_unique<MainWindow>(documentTestSettings());
     second->show();
     QVERIFY(openAndWait(*second, path));
     Script other(second.get());
@@ -323,7 +314,7 @@ void DocumentSaveTest::modifiedMarkerAndSaveChangesPrompt() {
 
 
 void DocumentSaveTest::unknownBrdfAndTypoKeysAreRefused() {
-    MainWindow window(quietSettings());
+    MainWindow window(documentTestSettings());
     window.show();
     const QString glossy = resource("scenes/glossy_sphere.wlscene");
     QVERIFY(openAndWait(window, glossy));

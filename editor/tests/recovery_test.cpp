@@ -9,6 +9,7 @@
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "scripting/script_api.h"
+#include "tests/document_test_settings.h"
 
 #include "scene/scene_io.h"
 
@@ -25,19 +26,10 @@ using namespace wavelit::editor;
 
 namespace {
 
-constexpr int kTimeoutMs = 60000;
-
-RenderSettings quietSettings() {
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
-    settings.sampler = render::SamplerKind::Bsdf;
-    settings.maxSamplesPerPixel = 1;
-    return settings;
-}
+constexpr int kTimeoutMs = kDocumentTimeoutMs;
 
 struct Editor {
-    Editor() : window(quietSettings()), api(new AppApi(&window, &engine)) {
+    Editor() : window(documentTestSettings()), api(new AppApi(&window, &engine)) {
         window.errors()->setDialogsEnabled(false);
     }
     bool open(const QString& path) {
