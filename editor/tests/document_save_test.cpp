@@ -12,7 +12,7 @@
 #include "panels/outline_panel.h"
 #include "panels/property_panel.h"
 #include "scripting/script_api.h"
-#include "tests/document_test_settings.h"
+#include "document_test_settings.h"
 
 #include "scene/scene_io.h"
 

@@ -9,7 +9,7 @@
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "scripting/script_api.h"
-#include "tests/document_test_settings.h"
+#include "document_test_settings.h"
 
 #include "scene/scene_io.h"
 
