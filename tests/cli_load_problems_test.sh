@@ -5,31 +5,10 @@
 # `render` prints while it renders. CPU renders of 4x4 pixels, so no device is needed.
 # Usage: bash cli_load_problems_test.sh <wavelit-cli> <source-dir>
 set -u
-cli="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-failures=0
+source "$(dirname "$0")/cli_expect.sh"
 bad="$src/tests/data/bad"
 good="$src/tests/data/good"
 tiny=(--width 4 --height 4 --spp 1 --device cpu --sampler bsdf)
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect CODE NEEDLE... -- ARGS...: runs the CLI, checks the exit code and that stderr holds every NEEDLE.
-expect() {
-    local code="$1"
-    shift
-    local needles=()
-    while [ "$1" != "--" ]; do needles+=("$1"); shift; done
-    shift
-    "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
-    local rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $(cat "$tmp/err")"
-    for n in "${needles[@]}"; do
-        grep -qF -- "$n" "$tmp/err" || fail "'$*' did not print '$n': $(cat "$tmp/err")"
-    done
-}
 
 brdf_problem="material 'ground' (/materials/1/brdf): unknown BRDF 'no_such_brdf'; known: lambert, ggx"
 key_problem="unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)"

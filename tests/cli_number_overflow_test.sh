@@ -5,27 +5,7 @@
 # line; a refused render writes nothing.
 # Usage: bash cli_number_overflow_test.sh <wavelit-cli> <source-dir>
 set -u
-cli="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect CODE NEEDLE... -- ARGS...: runs the CLI, checks the exit code and that stderr holds every NEEDLE.
-expect() {
-    local code="$1"
-    shift
-    local needles=()
-    while [ "$1" != "--" ]; do needles+=("$1"); shift; done
-    shift
-    "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
-    local rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $(cat "$tmp/err")"
-    for n in "${needles[@]}"; do
-        grep -qF -- "$n" "$tmp/err" || fail "'$*' did not print '$n': $(cat "$tmp/err")"
-    done
-}
+source "$(dirname "$0")/cli_expect.sh"
 
 setup="$src/tests/data/bad/number_overflow.wllight"
 expect 1 "$setup: invalid JSON: number overflow parsing '1e999' at line 14" -- validate "$setup"

@@ -5,31 +5,10 @@
 # started anyway (16384^2 on lavapipe would take hours) into a failure.
 # Usage: bash cli_render_limits_test.sh <wavelit-cli> <source-dir>
 set -u
-cli="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+CLI_TIMEOUT=120
+source "$(dirname "$0")/cli_expect.sh"
 export WAVELIT_VK_VALIDATION=1
-failures=0
 scene="$src/resources/scenes/ring_on_ground.wlscene"
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect CODE NEEDLE... -- ARGS...: runs the CLI, checks the exit code and that stderr holds every NEEDLE.
-expect() {
-    local code="$1"
-    shift
-    local needles=()
-    while [ "$1" != "--" ]; do needles+=("$1"); shift; done
-    shift
-    timeout 120 "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
-    local rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $(cat "$tmp/err")"
-    for n in "${needles[@]}"; do
-        grep -qF -- "$n" "$tmp/err" || fail "'$*' did not print '$n': $(cat "$tmp/err")"
-    done
-    cat "$tmp/err"
-}
 
 # The accumulation buffer (16 bytes a pixel) of 16384x16384 is 4 GiB; lavapipe's storage buffers
 # hold 128 MiB (maxStorageBufferRange). Both the default sampler (tables) and bsdf are refused
