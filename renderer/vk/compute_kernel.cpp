@@ -122,8 +122,7 @@ void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     vkUpdateDescriptorSets(m_device, 1, &write, 0, nullptr);
 }
 
-void ComputeKernel::dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t groupsY,
-                             uint32_t groupsZ, const void* pushConstants) const {
+void ComputeKernel::bind(VkCommandBuffer cmd, const void* pushConstants) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.get());
     VkDescriptorSet set = m_set;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.get(), 0, 1, &set, 0,
@@ -131,18 +130,17 @@ void ComputeKernel::dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t gro
     if (m_pushBytes > 0 && pushConstants)
         vkCmdPushConstants(cmd, m_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes,
                            pushConstants);
+}
+
+void ComputeKernel::dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t groupsY,
+                             uint32_t groupsZ, const void* pushConstants) const {
+    bind(cmd, pushConstants);
     vkCmdDispatch(cmd, groupsX, groupsY, groupsZ);
 }
 
 void ComputeKernel::dispatchRegions(VkCommandBuffer cmd, std::span<const DispatchRegion> regions,
                                     const void* pushConstants) const {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.get());
-    VkDescriptorSet set = m_set;
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout.get(), 0, 1, &set, 0,
-                            nullptr);
-    if (m_pushBytes > 0 && pushConstants)
-        vkCmdPushConstants(cmd, m_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes,
-                           pushConstants);
+    bind(cmd, pushConstants);
     for (const DispatchRegion& r : regions)
         if (r.groupsX > 0 && r.groupsY > 0)
             vkCmdDispatchBase(cmd, r.baseX, r.baseY, 0, r.groupsX, r.groupsY, 1);

@@ -51,6 +51,9 @@ public:
     double creationSeconds() const { return m_creationSeconds; }
 
 private:
+    // Binds the pipeline and the descriptor set and pushes the constants (both dispatch forms).
+    void bind(VkCommandBuffer cmd, const void* pushConstants) const;
+
     // Declaration order = reverse destruction order: pipeline and layouts go before the pool.
     VkDevice m_device = VK_NULL_HANDLE;
     std::vector<BindingKind> m_bindings;
