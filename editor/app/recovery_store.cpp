@@ -32,13 +32,6 @@ util::Error recoveryError(const QString& file, const std::string& reason) {
     return util::makeError(util::ErrorKind::Invalid, file.toStdString(), reason);
 }
 
-// `path` relative to `fromFolder`, re-expressed relative to `toFolder`.
-std::string rebase(const std::string& path, const QString& fromFolder, const QString& toFolder) {
-    if (path.empty()) return path;
-    const QString absolute = QDir(fromFolder).absoluteFilePath(QString::fromStdString(path));
-    return QDir(toFolder).relativeFilePath(QDir::cleanPath(absolute)).toStdString();
-}
-
 } // namespace
 
 RecoveryStore::RecoveryStore(QString folder) : m_folder(std::move(folder)) {}
@@ -97,7 +90,8 @@ util::Result<RecoveredDocument> RecoveryStore::read(const Recovery& recovery) co
         // Back to a reference: the edited lighting stays in the document, the file stays as it is.
         const QString sceneFolder = QFileInfo(target).absolutePath();
         const QString setupFolder = QFileInfo(lightingFile).absolutePath();
-        scene.lighting.environment.path = rebase(scene.lighting.environment.path, sceneFolder, setupFolder);
+        scene.lighting.environment.path = rebaseRelativePath(scene.lighting.environment.path,
+                                                              sceneFolder.toStdString(), setupFolder.toStdString());
         scene.lightingPath = QDir(sceneFolder).relativeFilePath(lightingFile).toStdString();
         auto setup = scene::loadLightingSetup(lightingFile.toStdString());
         out.savedLighting = setup ? std::move(setup.value()) : scene::LightingSetup{};

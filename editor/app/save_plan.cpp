@@ -11,12 +11,6 @@ namespace fs = std::filesystem;
 
 fs::path folderOf(const std::string& file) { return fs::absolute(fs::path(file)).parent_path(); }
 
-// `path` (relative to `from`) as seen from `to`; empty paths stay empty.
-std::string rebase(const std::string& path, const fs::path& from, const fs::path& to) {
-    if (path.empty()) return path;
-    return (from / path).lexically_normal().lexically_relative(to.lexically_normal()).generic_string();
-}
-
 // "<stem>.wllight" beside the scene, or "<stem>_lighting.wllight" where that is the setup being
 // copied (a scene saved next to its own setup under the same stem).
 fs::path copyFileFor(const std::string& scenePath, const std::string& sharedFile) {
@@ -28,6 +22,13 @@ fs::path copyFileFor(const std::string& scenePath, const std::string& sharedFile
 }
 
 } // namespace
+
+std::string rebaseRelativePath(const std::string& path, const std::string& fromFolder,
+                               const std::string& toFolder) {
+    if (path.empty()) return path;
+    const fs::path from = fs::absolute(fs::path(fromFolder)), to = fs::absolute(fs::path(toFolder));
+    return (from / path).lexically_normal().lexically_relative(to.lexically_normal()).generic_string();
+}
 
 const char* lightingSaveName(LightingSave choice) {
     switch (choice) {
@@ -76,14 +77,16 @@ util::Result<SavePlan> planSave(const scene::Scene& scene, const std::string& fr
         break;
     case LightingSave::Copy: {
         const fs::path copy = copyFileFor(toPath, shared);
-        out->lighting.environment.path = rebase(scene.lighting.environment.path, sharedFolder, copy.parent_path());
+        out->lighting.environment.path = rebaseRelativePath(scene.lighting.environment.path,
+                                                            sharedFolder.string(), copy.parent_path().string());
         out->lightingPath = copy.filename().string();
         plan.lightingFile = copy.string();
         plan.lighting = out->lighting;
         break;
     }
     case LightingSave::Inline:
-        out->lighting.environment.path = rebase(scene.lighting.environment.path, sharedFolder, folderOf(toPath));
+        out->lighting.environment.path = rebaseRelativePath(scene.lighting.environment.path,
+                                                            sharedFolder.string(), folderOf(toPath).string());
         out->lightingPath.clear();
         break;
     }

@@ -40,6 +40,10 @@ struct SavePlan {
 util::Result<SavePlan> planSave(const scene::Scene& scene, const std::string& fromPath,
                                 const std::string& toPath, LightingSave choice, bool lightingEdited);
 
+// `path`, relative to `fromFolder`, re-expressed relative to `toFolder` ("" stays "").
+std::string rebaseRelativePath(const std::string& path, const std::string& fromFolder,
+                               const std::string& toFolder);
+
 // The absolute file a referenced setup lives in ("" for inline lighting).
 std::string lightingFileOf(const scene::Scene& scene, const std::string& scenePath);
 
