@@ -3,7 +3,7 @@
 // and the roughest one (r = 1): chi-square goodness-of-fit of sample() against pdf(), pdf
 // consistency, Monte Carlo albedo against quadrature, reciprocity and energy conservation.
 #include "plugins/brdf.h"
-#include "plugins/brdf_albedo.h"
+#include "plugins/testing/brdf_albedo.h"
 
 #include "util/direction_chi_square.h"
 #include "util/hemisphere_sampling.h"

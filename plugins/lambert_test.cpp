@@ -1,7 +1,7 @@
 // Closed forms of the Lambert plugin: f = ρ/π, pdf = cosθ/π and, because sampling is exactly
 // proportional to f·cos, every sample's weight f·cos/pdf equals ρ (zero variance).
 #include "plugins/brdf.h"
-#include "plugins/brdf_albedo.h"
+#include "plugins/testing/brdf_albedo.h"
 
 #include "util/rng.h"
 

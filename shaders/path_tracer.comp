@@ -1,6 +1,6 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
-// loop with Russian roulette) so its mean image matches render/cpu_path_tracer.cpp within noise.
+// loop with Russian roulette) so its mean image matches render/reference/cpu_path_tracer.cpp within noise.
 // Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
 // defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
 // common/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
@@ -8,7 +8,7 @@
 // DIRECT environment light (env, mis, wavelet, oracle; issue 20), whose continuation is the BSDF
 // sample, MIS-weighted against it (docs/estimator.md "Direction samplers").
 //
-// Buffers follow the layouts of renderer/scene/bvh.h and renderer/render/gpu_scene_data.h.
+// Buffers follow the layouts of renderer/scene/bvh.h and renderer/render/gpu/gpu_scene_data.h.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require

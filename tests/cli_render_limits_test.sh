@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Limits said up front (issue 15, renderer/render/render_limits.h): a render the Vulkan device cannot
+# Limits said up front (issue 15, renderer/render/gpu/render_limits.h): a render the Vulkan device cannot
 # hold is refused before anything is allocated or rendered, exit 1, with a message naming the size,
 # the device's limit, by how much it is exceeded and what to do. `timeout` turns a render that was
 # started anyway (16384^2 on lavapipe would take hours) into a failure.

@@ -4,16 +4,16 @@
 // the pixel's view angle: exactly ρL for Lambert, and for GGX the E(μo) that dense quadrature of
 // the C++ BRDF gives (plugins/brdf_albedo.h) — independent of the sampling code under test.
 // Background pixels see L exactly; no pixel may be NaN or Inf.
-#include "render/cpu_analytic_scenes.h"
-#include "render/cpu_camera.h"
-#include "render/cpu_path_tracer.h"
-#include "render/cpu_surface.h"
-#include "render/direction_sampler.h"
-#include "render/integrator_factory.h"
+#include "render/testing/cpu_analytic_scenes.h"
+#include "render/reference/cpu_camera.h"
+#include "render/reference/cpu_path_tracer.h"
+#include "render/reference/cpu_surface.h"
+#include "render/sampling/direction_sampler.h"
+#include "render/session/integrator_factory.h"
 #include "scene/bvh.h"
 
 #include "plugins/brdf.h"
-#include "plugins/brdf_albedo.h"
+#include "plugins/testing/brdf_albedo.h"
 
 #include <gtest/gtest.h>
 

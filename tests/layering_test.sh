@@ -27,6 +27,27 @@ check renderer/scene 'scene|plugins|util'
 check renderer/vk 'vk|util'
 check plugins 'plugins|util'
 check renderer/render 'render|scene|wavelet|vk|plugins|util'
+# Inside render/ (its CMakeLists names each folder's job): lights and sampling never reach up into
+# the tracers, the reference tracer never into the GPU one, only gpu/, session/ (the device limits)
+# and testing/ touch Vulkan, and nothing in production includes testing/.
+check_render() { # folder, forbidden include prefixes (regex alternation)
+    local dir=renderer/render/$1 forbidden=$2
+    while IFS= read -r line; do
+        file=${line%%:*}
+        inc=$(sed -E 's/.*#include *"([^"]+)".*/\1/' <<< "${line#*:}")
+        case "$file" in *_test.cpp) [[ "$inc" =~ ^render/testing/ ]] && continue ;; esac
+        if [[ "$inc" =~ ^($forbidden) ]]; then
+            echo "layering: $file includes \"$inc\" (render/$1 may not use: $forbidden)"
+            status=1
+        fi
+    done < <(grep -nE '^ *#include *"' "$dir"/*.h "$dir"/*.cpp 2>/dev/null | sed -E 's/^([^:]+):[0-9]+:/\1:/')
+}
+check_render lights 'render/(session|sampling|reference|gpu|testing)/|vk/'
+check_render sampling 'render/(reference|gpu|testing)/|vk/'
+check_render sampling/product 'render/(session|reference|gpu|testing)/|vk/'
+check_render reference 'render/(gpu|testing)/|vk/'
+check_render session 'render/testing/|vk/'
+check_render gpu 'render/testing/'
 check renderer/cli 'cli|render|scene|wavelet|vk|plugins|util'
 check editor 'app|viewport|panels|commands|scripting|editor|render|scene|util'
 qt=$(grep -rlnE '#include *<Q[A-Za-z]|#include *<Qt' renderer plugins 2>/dev/null)

@@ -3,7 +3,7 @@
 // process with the same options (same estimator and random streams, docs/estimator.md).
 // The scene keeps its analytic lights (the studio setup's rect softbox): both tracers sample
 // them with the same next-event estimation, MIS and random draws (docs/estimator.md).
-#include "render/render_session.h"
+#include "render/session/render_session.h"
 #include "scene/image_io.h"
 #include "scene/scene_io.h"
 

@@ -10,7 +10,7 @@
 
 #include "viewport/render_frame.h"
 
-#include "render/render_options.h"
+#include "render/session/render_options.h"
 
 #include <QObject>
 #include <QThread>

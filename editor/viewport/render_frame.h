@@ -3,7 +3,7 @@
 // render thread never touches an image after publishing it, so neither side needs a lock.
 #pragma once
 
-#include "render/render_options.h"
+#include "render/session/render_options.h"
 #include "scene/scene.h"
 #include "util/image.h"
 

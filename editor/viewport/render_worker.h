@@ -21,7 +21,7 @@
 
 #include "viewport/render_frame.h"
 
-#include "render/render_session.h"
+#include "render/session/render_session.h"
 
 #include <QElapsedTimer>
 #include <QObject>

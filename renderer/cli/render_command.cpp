@@ -1,6 +1,6 @@
 // `wavelit-cli render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]
 //  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]
-//  [--trace-outliers N --outliers OUT.json]` (the outlier tracer: render/outlier_tracer.h)
+//  [--trace-outliers N --outliers OUT.json]` (the outlier tracer: render/reference/outlier_tracer.h)
 // (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
@@ -10,10 +10,10 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/render_flags.h"
-#include "render/direction_sampler.h"
-#include "render/outlier_tracer.h"
-#include "render/render_session.h"
-#include "render/sampler_tables_cache.h"
+#include "render/sampling/direction_sampler.h"
+#include "render/reference/outlier_tracer.h"
+#include "render/session/render_session.h"
+#include "render/sampling/sampler_tables_cache.h"
 #include "scene/atomic_file.h"
 #include "scene/image_io.h"
 #include "scene/scene_io.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "cli/args.h"
-#include "render/render_options.h"
+#include "render/session/render_options.h"
 #include "scene/scene.h"
 #include "util/result.h"
 

@@ -1,5 +1,5 @@
 // BRDF dispatch by material type: the GLSL twins in plugins/<name>.glsl, selected by the type
-// code the GPU driver writes per material (render/gpu_scene_data.h: kBrdfLambert, kBrdfGgx).
+// code the GPU driver writes per material (render/gpu/gpu_scene_data.h: kBrdfLambert, kBrdfGgx).
 // Local shading frame, z = normal; f without the cosine; pdf in solid angle (plugins/brdf.h).
 #ifndef WAVELIT_BRDF_GLSL
 #define WAVELIT_BRDF_GLSL

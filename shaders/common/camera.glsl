@@ -1,4 +1,4 @@
-// Pinhole camera ray, docs/estimator.md "Camera" (render/cpu_camera.cpp is the CPU twin).
+// Pinhole camera ray, docs/estimator.md "Camera" (render/reference/cpu_camera.cpp is the CPU twin).
 // forward/right/up are the orthonormal camera axes; y = 0 is the top row.
 #ifndef WAVELIT_CAMERA_GLSL
 #define WAVELIT_CAMERA_GLSL

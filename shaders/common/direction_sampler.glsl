@@ -1,4 +1,4 @@
-// Direction samplers of the Vulkan tracer (issue 6; render/direction_sampler.h is the CPU side,
+// Direction samplers of the Vulkan tracer (issue 6; render/sampling/direction_sampler.h is the CPU side,
 // docs/wavelet-sampler.md the tables). Every kind returns the exact solid-angle pdf of the
 // mixture it draws from, and the tracer divides by it (architecture.md §4: never the paper's eq 7).
 //
@@ -46,7 +46,7 @@ const uint kSamplerMis = 4u;
 const uint kSamplerWavelet = 5u;
 const uint kSamplerOracle = 6u;
 
-// SamplerMaterial.mode (render/gpu_sampler_data.h).
+// SamplerMaterial.mode (render/gpu/gpu_sampler_data.h).
 const uint kModeBsdfOnly = 0u;
 const uint kModeProduct = 1u;
 const uint kModeBsdfLobe = 2u;
@@ -64,10 +64,10 @@ const float kFourPi = 4.0 * kPi;
 
 // The product pyramid of one hit: masses of levels 0..m at offsets (4^l - 1) / 3, and while it is
 // decoded, the env factor's node of each cell of levels 0..m-1. The GPU stops at 2^4 x 2^4 leaves
-// (render/gpu_sampler_data.h kGpuMaxProductLevel) even where the tables hold finer details: the
+// (render/gpu/gpu_sampler_data.h kGpuMaxProductLevel) even where the tables hold finer details: the
 // per-hit cost is ~4^m BRDF evaluations, and below the leaves the env's quadtree refines anyway.
 const int kMaxProductLevel = 4;
-// The oracle's dense grid (render/gpu_sampler_data.h kGpuOracleLevel) and how far below the env's
+// The oracle's dense grid (render/gpu/gpu_sampler_data.h kGpuOracleLevel) and how far below the env's
 // texels its window may shrink (OracleOptions::depthBelowEnv), and its smallest env share (the
 // CPU oracle's).
 const int kOracleLevel = 5;

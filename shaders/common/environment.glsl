@@ -1,4 +1,4 @@
-// Environment radiance, docs/estimator.md "Environment" (render/cpu_environment.cpp is the CPU
+// Environment radiance, docs/estimator.md "Environment" (render/lights/cpu_environment.cpp is the CPU
 // twin): rotate by -yaw about +Y, equirectangular (u, v) with v = 0 the top row, nearest texel.
 // The texels live in a float buffer (3 floats each, row-major) that the including shader
 // declares as `envTexels`.

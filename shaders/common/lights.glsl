@@ -2,14 +2,14 @@
 // light_sampler.cpp and light_spherical_rect.cpp, docs/estimator.md "Analytic lights". Same
 // formulas in the same order, all float; the constants derived once per light (emission, axes,
 // cone terms) are computed on the CPU in double exactly as LightSampler's constructor does
-// (render/gpu_scene_data.cpp packs them) and read from `Light`.
+// (render/gpu/gpu_scene_data.cpp packs them) and read from `Light`.
 #ifndef WAVELIT_LIGHTS_GLSL
 #define WAVELIT_LIGHTS_GLSL
 
 #include "common/constants.glsl"
 #include "common/sampling.glsl"
 
-// Type codes shared with render/gpu_scene_data.h (kGpuLight*).
+// Type codes shared with render/gpu/gpu_scene_data.h (kGpuLight*).
 const uint kLightPoint = 0u;
 const uint kLightSphere = 1u; // r > 0 only: a zero radius is packed as a point
 const uint kLightRect = 2u;
@@ -44,7 +44,7 @@ struct LightSample {
 uint lightType(Light l) { return uint(l.positionType.w); }
 bool lightIsDelta(Light l) { return l.sun.z != 0.0; }
 
-// Power heuristic a^2 / (a^2 + b^2) as 1 / (1 + (b/a)^2) (render/light_set.cpp).
+// Power heuristic a^2 / (a^2 + b^2) as 1 / (1 + (b/a)^2) (render/lights/light_set.cpp).
 float powerHeuristic(float a, float b) {
     if (!(a > 0.0)) return 0.0;
     float r = b / a;

@@ -1,5 +1,5 @@
 // The direction samplers' buffer element types, std430 twins of the C++ layouts
-// (render/gpu_sampler_data.h: wavelet::HierarchicalSampler::TableNode, GpuSamplerMaterial).
+// (render/gpu/gpu_sampler_data.h: wavelet::HierarchicalSampler::TableNode, GpuSamplerMaterial).
 // Shaders include this, declare their buffers of these types at their own bindings, then include
 // common/direction_sampler.glsl.
 #ifndef WAVELIT_SAMPLER_STRUCTS_GLSL

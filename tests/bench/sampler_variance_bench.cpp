@@ -1,7 +1,7 @@
 // Deterministic variance study of the direction samplers (issue 6; architecture.md §4.1's study):
 // one shading point (GGX, F0 0.9, view 45 degrees, normal +Y), no visibility, and for each
 // sampler the EXACT per-sample variance of the estimator g/p, g = luminance(f L cos), computed on
-// the environment's own texels (render/sampler_integrals.h): Var = integral g^2/p - I^2.
+// the environment's own texels (render/testing/sampler_integrals.h): Var = integral g^2/p - I^2.
 // Environments: a synthetic sky with a 0.53-degree sun at 1e5 x the sky mean, 12 degrees from the
 // reflection vector (1024 x 512), and the bundled city / courtyard maps box-filtered to 512 x 256.
 // Prints markdown tables (relative variance Var / I^2 per sampler and roughness, the wavelet /
@@ -11,10 +11,10 @@
 // --gpu adds the Vulkan tracer's `wavelet` and `oracle` (built differently from the CPU's): their
 // mixtures are built on the device at the same shading point and read back (gpu_sampler_probe.h),
 // and their exact variance computed on the same dense grid. (The GPU's other kinds are twins.)
-#include "render/direction_sampler.h"
-#include "render/gpu_sampler_probe.h"
-#include "render/sampler_integrals.h"
-#include "render/sampler_test_envs.h"
+#include "render/sampling/direction_sampler.h"
+#include "render/testing/gpu_sampler_probe.h"
+#include "render/testing/sampler_integrals.h"
+#include "render/testing/sampler_test_envs.h"
 #include "util/timer.h"
 
 #include <glm/geometric.hpp>

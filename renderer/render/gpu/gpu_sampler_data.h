@@ -1,0 +1,77 @@
+// The direction samplers' tables as the Vulkan tracer reads them (shaders/common/
+// direction_sampler.glsl, env_table.glsl), packed on the CPU so the layout can be tested without a
+// device. Three buffers:
+//   envNodes   the env's HierarchicalSampler float tables, as they are (16 bytes per node)
+//   materials  one GpuSamplerMaterial per GPU material (scene materials, then the default)
+//   words      every used material's flat product tables (MaterialProductTables::flatten(): header,
+//              node words, scaling floats, each at its own offset), then the env's 16 x 16 cell
+//              averages as float bits at tailOffset (the mixture's tail estimate; 8 x 8)
+#pragma once
+
+#include "render/session/render_options.h"
+#include "render/sampling/sampler_tables_cache.h"
+#include "util/result.h"
+#include "wavelet/hierarchical_sampler.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wavelit::render {
+
+// SamplerMaterial.mode codes shared with direction_sampler.glsl.
+inline constexpr uint32_t kGpuSamplerBsdfOnly = 0;
+inline constexpr uint32_t kGpuSamplerProduct = 1;
+inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
+inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense product
+// The finest product level the shader forms per hit (2^4 x 2^4 leaves; finer table details are
+// not synthesised: the env's quadtree refines below the leaves) and the tail estimate's cells
+// (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
+inline constexpr int kGpuMaxProductLevel = 4;
+inline constexpr int kGpuTailLevel = 3;
+// The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower;
+// gpu_sampler_data.cpp says why).
+inline constexpr double kGpuMinBsdfShare = 0.1;
+
+// The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the
+// exact axis, like the CPU's (oracle_sampler.h), but at 2^5 x 2^5 leaves, each the mean of
+// L x BRDF x cos over its 2 x 2 sub-cells (env-weighted, so the leaf masses are those of the 64^2
+// product), then 2 levels of lobe refinement (env split x BRDF x cos at the children's centres)
+// down to the CPU oracle's 2^7 resolution, then the env's quadtree. The CPU's 128^2 grid would
+// take 21 KiB of private memory and ~65k BRDF evaluations per hit; this one ~4k.
+inline constexpr int kGpuOracleLevel = 5;
+inline constexpr uint32_t kGpuOracleRefineLevels = 2;
+
+// Mirrors `struct SamplerMaterial` in shaders/common/sampler_structs.glsl (std430).
+struct GpuSamplerMaterial {
+    uint32_t mode = kGpuSamplerBsdfOnly;
+    uint32_t tableOffset = 0;   // word offset of the flat header
+    uint32_t nodeOffset = 0;    // word offset of its node words
+    uint32_t scalingOffset = 0; // word offset of its scaling floats
+    float mixBsdf = 0.0f;       // defensive bsdf share with the product
+    float capHalfAngle = 0.0f;  // lobe cap (tail estimate without a product)
+    uint32_t aroundNormal = 0;  // 1: the product's axis is the normal (Lambert)
+    uint32_t refineMaxLevels = 0;   // lobe refinement below the product's leaves (the policy's)
+    float refineCellAngle = 0.0f;   // radians; 0: none
+    uint32_t pad[3] = {0, 0, 0};
+};
+static_assert(sizeof(GpuSamplerMaterial) == 48);
+static_assert(sizeof(wavelet::HierarchicalSampler::TableNode) == 16);
+
+struct GpuSamplerData {
+    uint32_t kind = 0; // SamplerKind as its integer code
+    bool lit = false;
+    float envMean = 0.0f;
+    uint32_t tailOffset = 0;
+    uint32_t envLevel = 0; // the env map's level N
+    std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty
+    std::vector<GpuSamplerMaterial> materials;                     // never empty
+    std::vector<uint32_t> words;                                   // never empty
+    size_t bytes() const;
+};
+
+// `tables` from SamplerTablesCache::update; gpuMaterialCount = scene materials + 1 (the
+// default). Errors (Unsupported): a product level below 1.
+util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
+                                             size_t gpuMaterialCount);
+
+} // namespace wavelit::render

@@ -1,0 +1,416 @@
+#include "render/sampling/direction_sampler.h"
+
+#include "render/sampling/oracle_sampler.h"
+#include "util/hemisphere_sampling.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace wavelit::render {
+namespace {
+
+// One-sample MIS of two techniques at 1/2 each (the `mis` kind).
+constexpr double kMisWeight = 0.5;
+// The env share of the product mixtures: never 0 (full support for bright tails the estimates
+// below miss) and never all (the lobe technique keeps most of its samples).
+// (0.05 before the lobe refinement: every defensive share c costs ~c in Var/I^2 where the lobe
+// technique is good, docs/sampler-variance.md.)
+constexpr double kMinEnvShare = 0.02, kMaxEnvShare = 0.8;
+constexpr int kLobeStrata = 4;
+constexpr int kTailLevel = 4; // 16^2 cells: the tail estimate costs 256 BRDF evaluations
+
+// Field-for-field equality of what SamplerEnvironment::build reads (and the path, which names
+// the content). Images: the same pointer, else the same size and texels (a scene copy usually
+// shares the pointer; a reloaded map does not, and comparing ~1e6 texels costs ~1 ms, far less
+// than a rebuild).
+bool sameEnvironment(const scene::Environment& a, const scene::Environment& b) {
+    if (a.path != b.path || a.rotationDeg != b.rotationDeg || a.intensity != b.intensity ||
+        a.tint != b.tint)
+        return false;
+    if (a.image == b.image)
+        return true;
+    if (!a.image || !b.image)
+        return false;
+    return a.image->width == b.image->width && a.image->height == b.image->height &&
+           a.image->pixels == b.image->pixels;
+}
+
+bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironmentOptions& b) {
+    return a.maxLevel == b.maxLevel && a.minLevel == b.minLevel;
+}
+
+} // namespace
+
+bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b) {
+    return a.brdf == b.brdf && a.params.baseColor == b.params.baseColor &&
+           a.params.roughness == b.params.roughness;
+}
+
+// samplerKindName lives in render_options.cpp (one name table for CLI and samplers).
+
+std::vector<SamplerKind> allSamplerKinds() {
+    return {SamplerKind::Uniform, SamplerKind::Cosine, SamplerKind::Bsdf, SamplerKind::Env,
+            SamplerKind::Mis,     SamplerKind::Wavelet, SamplerKind::Oracle};
+}
+
+bool samplerHasEnvNee(SamplerKind kind) {
+    return kind == SamplerKind::Env || kind == SamplerKind::Mis || kind == SamplerKind::Wavelet ||
+           kind == SamplerKind::Oracle;
+}
+
+bool continuationFromSampler(SamplerKind kind) {
+    return kind == SamplerKind::Uniform || kind == SamplerKind::Cosine;
+}
+
+SamplerKind vertexSamplerKind(SamplerKind kind) {
+    return kind == SamplerKind::Mis ? SamplerKind::Env : kind;
+}
+
+std::shared_ptr<const DirectionSamplerTables>
+DirectionSamplerTables::build(const scene::Environment& env, std::vector<SamplerMaterial> materials,
+                              SamplerKind kind, const SamplerEnvironmentOptions& envOptions) {
+    return build(env, std::move(materials), kind, nullptr, envOptions);
+}
+
+std::shared_ptr<const DirectionSamplerTables>
+DirectionSamplerTables::build(const scene::Environment& env, std::vector<SamplerMaterial> materials,
+                              SamplerKind kind, const DirectionSamplerTables* previous,
+                              const SamplerEnvironmentOptions& envOptions) {
+    auto t = std::make_shared<DirectionSamplerTables>();
+    t->m_kind = kind;
+    t->m_source = env;
+    t->m_envOptions = envOptions;
+    t->m_envReused = previous && sameEnvironment(previous->m_source, env) &&
+                     sameEnvOptions(previous->m_envOptions, envOptions);
+    t->m_env = t->m_envReused ? previous->m_env
+                              : std::make_shared<const SamplerEnvironment>(
+                                    SamplerEnvironment::build(env, envOptions));
+    t->m_materials = std::move(materials);
+    if (kind != SamplerKind::Wavelet)
+        return t;
+    for (const SamplerMaterial& m : t->m_materials) {
+        // Product tables are a function of (env, plugin, params): reusable only over the same env.
+        std::shared_ptr<const MaterialProductTables> product;
+        if (t->m_envReused)
+            for (size_t i = 0; i < previous->m_products.size() && !product; ++i)
+                if (sameSampling(previous->m_materials[i], m))
+                    product = previous->m_products[i];
+        t->m_productReused.push_back(product != nullptr);
+        if (!product)
+            product = std::make_shared<const MaterialProductTables>(MaterialProductTables::build(
+                *t->m_env, chooseProductPolicy(*m.brdf, m.params, *t->m_env)));
+        t->m_products.push_back(std::move(product));
+    }
+    return t;
+}
+
+const MaterialProductTables* DirectionSamplerTables::productTables(size_t i) const {
+    return i < m_products.size() ? m_products[i].get() : nullptr;
+}
+
+bool DirectionSamplerTables::productTablesReused(size_t i) const {
+    return i < m_productReused.size() && m_productReused[i];
+}
+
+std::string DirectionSamplerTables::report() const {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "sampler %s: env octahedral %d^2 (%s), %.1f KiB, built in %.1f ms%s\n",
+                  samplerKindName(m_kind), 1 << m_env->level(),
+                  m_env->hasLight() ? "lit" : "black", double(m_env->bytes()) / 1024.0,
+                  m_env->buildSeconds() * 1e3, m_envReused ? " (reused)" : "");
+    std::string out = line;
+    for (size_t i = 0; i < m_products.size(); ++i)
+        out += "  material " + m_materials[i].name + ": " + m_products[i]->describe() +
+               (m_productReused[i] ? " (reused)" : "") + "\n";
+    return out;
+}
+
+DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
+                                   const ShadingPoint& point)
+    : m_tables(&tables), m_kind(kind), m_point(point),
+      m_material(&tables.material(point.material)) {
+    m_woLocal = toShading(point.wo);
+    const bool lit = tables.environment().hasLight();
+    switch (kind) {
+    case SamplerKind::Uniform:
+        m_components = {{Technique::Uniform, 1.0}};
+        break;
+    case SamplerKind::Cosine:
+        m_components = {{Technique::Cosine, 1.0}};
+        break;
+    case SamplerKind::Bsdf:
+        m_components = {{Technique::Bsdf, 1.0}};
+        break;
+    case SamplerKind::Env:
+        m_components = {{lit ? Technique::Env : Technique::Bsdf, 1.0}};
+        break;
+    case SamplerKind::Mis:
+        if (lit)
+            m_components = {{Technique::Bsdf, kMisWeight}, {Technique::Env, 1.0 - kMisWeight}};
+        else
+            m_components = {{Technique::Bsdf, 1.0}};
+        break;
+    case SamplerKind::Wavelet:
+    case SamplerKind::Oracle:
+        addProduct(kind);
+        break;
+    }
+    if (m_describe.empty())
+        m_describe = samplerKindName(kind);
+}
+
+void DirectionSampler::addProduct(SamplerKind kind) {
+    const SamplerEnvironment& env = m_tables->environment();
+    const bool lambert = std::string(m_material->brdf->name()) == "lambert";
+    const glm::vec3 n = m_point.n, wo = m_point.wo;
+    const glm::vec3 axisWorld = lambert ? n : 2.0f * glm::dot(wo, n) * n - wo;
+    const glm::dvec3 axis = env.toLocal(glm::normalize(glm::dvec3(axisWorld)));
+    auto brdfCosLocal = [&](const glm::dvec3& dLocal) {
+        return double(util::luminance(brdfCos(glm::vec3(env.toWorld(dLocal)))));
+    };
+    m_components = {{Technique::Bsdf, 1.0}};
+    if (!env.hasLight()) {
+        m_describe = std::string(samplerKindName(kind)) + ": black environment, bsdf";
+        return;
+    }
+    double bsdfShare = kOracleBsdfShare;
+    double capAngle = oracleCapHalfAngle(lambert, m_material->params.roughness);
+    if (kind == SamplerKind::Oracle) {
+        m_product = buildOracleProduct(env, axis, capAngle, brdfCosLocal);
+        m_describe = m_product ? "oracle: dense 128^2 product, refined" : "oracle: all-zero "
+                                                                         "product, bsdf lobe";
+    } else {
+        const MaterialProductTables* tables = m_tables->productTables(m_point.material);
+        if (!tables) {
+            m_describe = "wavelet: no product tables built (tables are not for `wavelet`), bsdf";
+            return;
+        }
+        const ProductPolicy& policy = tables->policy();
+        bsdfShare = policy.mixBsdf;
+        capAngle = policy.capHalfAngle;
+        if (policy.mode == ProductMode::BsdfLobe) {
+            m_describe = "wavelet, bsdf lobe: " + policy.reason;
+        } else {
+            const int bin = tables->binOf(axis);
+            const ProductWindow window = tables->window(bin);
+            // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
+            // the product's leaf masses are those of the product at 2x its resolution.
+            const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeighted(
+                env, window, policy.productLevel, brdfCosLocal, 2);
+            m_product = EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
+                                                       brdfGrid, policy.brdfKeep);
+            if (m_product) {
+                // The refinement's BRDF x cos, captured by value (the sampler may be moved).
+                const plugins::Brdf* brdf = m_material->brdf;
+                const plugins::BrdfParams params = m_material->params;
+                const glm::vec3 woLocal = m_woLocal;
+                const glm::dvec3 t = env.toLocal(glm::dvec3(m_point.t));
+                const glm::dvec3 bt = env.toLocal(glm::dvec3(m_point.b));
+                const glm::dvec3 nl = env.toLocal(glm::dvec3(m_point.n));
+                m_product->setLobeRefinement(
+                    [=](const glm::dvec3& d) {
+                        const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, bt)),
+                                          float(glm::dot(d, nl)));
+                        if (l.z <= 0.0f)
+                            return 0.0;
+                        return double(util::luminance(brdf->eval(params, woLocal, l) * l.z));
+                    },
+                    lobeRefineLevels(policy, window, env.level()));
+            }
+            m_describe = m_product ? "wavelet product: " + policy.reason
+                                   : "wavelet: all-zero product here, bsdf lobe";
+        }
+    }
+    // Shares of the one-sample mixture. If each technique served only its own part of the
+    // integrand, Var + I^2 = sum_i M_i / c_i (M_i: that part's second moment under technique i
+    // alone), least for c_i ~ sqrt(M_i). The lobe part is the lobe technique's (product, else
+    // bsdf); the rest (a sun in the BRDF's tail) is env sampling's, estimated on coarse cells.
+    const double lobeMoment = m_product ? productLobeMoment() : bsdfLobeMoment();
+    const double tailMoment = tailEnvMoment(axis, capAngle);
+    const double a = std::sqrt(std::max(tailMoment, 0.0)), b = std::sqrt(std::max(lobeMoment, 0.0));
+    const double envShare = std::clamp(a / std::max(a + b, 1e-300), kMinEnvShare, kMaxEnvShare);
+    if (m_product)
+        m_components = {{Technique::Product, 1.0 - envShare - bsdfShare},
+                        {Technique::Bsdf, bsdfShare},
+                        {Technique::Env, envShare}};
+    else
+        m_components = {{Technique::Bsdf, 1.0 - envShare}, {Technique::Env, envShare}};
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " [env share %.2f]", envShare);
+    m_describe += buf;
+}
+
+double DirectionSampler::productLobeMoment() const {
+    // The product is close to the lobe's integrand, so its second moment is close to I_lobe^2.
+    const double lobe = m_product->integralSolidAngle();
+    return lobe * lobe;
+}
+
+double DirectionSampler::bsdfLobeMoment() const {
+    // Stratified 4x4 BSDF draws with the env's cell averages: the mean of (g/p)^2.
+    const SamplerEnvironment& env = m_tables->environment();
+    const int side = 1 << env.level();
+    double sum = 0.0;
+    for (int j = 0; j < kLobeStrata; ++j)
+        for (int i = 0; i < kLobeStrata; ++i) {
+            const plugins::BrdfSample s = m_material->brdf->sample(
+                m_material->params, m_woLocal, (i + 0.5f) / kLobeStrata, (j + 0.5f) / kLobeStrata);
+            if (!s.valid || !(s.pdf > 0.0f))
+                continue;
+            const glm::dvec2 p =
+                octSquarePoint(env.map(), env.toLocal(glm::dvec3(fromShading(s.wi))));
+            const double g = double(util::luminance(s.f)) * s.wi.z / s.pdf *
+                             env.cellAverage(env.level(), int(p.x * side), int(p.y * side));
+            sum += g * g;
+        }
+    return sum / (kLobeStrata * kLobeStrata);
+}
+
+double DirectionSampler::tailEnvMoment(const glm::dvec3& axisLocal, double capAngle) const {
+    // Second moment of env sampling over the coarse cells outside the lobe (the product's
+    // window, else the lobe's cap widened by a cell): sum_c (L_c fcos_c)^2 / p_c dw with
+    // p_c = L_c / E, E the env's integral: sum_c L_c fcos_c^2 E dw.
+    const SamplerEnvironment& env = m_tables->environment();
+    const int side = 1 << kTailLevel;
+    const double dw = 4.0 * std::numbers::pi / (double(side) * side);
+    const double energy = env.cellAverage(0, 0, 0) * 4.0 * std::numbers::pi;
+    const double cellAngle = std::sqrt(4.0 * std::numbers::pi) / side;
+    const double cosCap = std::cos(std::min(capAngle + cellAngle, std::numbers::pi));
+    double sum = 0.0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const glm::dvec2 p((x + 0.5) / side, (y + 0.5) / side);
+            glm::dvec2 local;
+            if (m_product ? m_product->window().toLocal(p, local) : false)
+                continue;
+            const glm::dvec3 d = env.map().toDirection(0, p);
+            if (!m_product && glm::dot(d, axisLocal) > cosCap)
+                continue;
+            const double fcos = double(util::luminance(brdfCos(glm::vec3(env.toWorld(d)))));
+            sum += env.cellAverage(kTailLevel, x, y) * fcos * fcos;
+        }
+    return sum * energy * dw;
+}
+
+glm::vec3 DirectionSampler::toShading(const glm::vec3& w) const {
+    return {glm::dot(w, m_point.t), glm::dot(w, m_point.b), glm::dot(w, m_point.n)};
+}
+
+glm::vec3 DirectionSampler::fromShading(const glm::vec3& w) const {
+    return w.x * m_point.t + w.y * m_point.b + w.z * m_point.n;
+}
+
+glm::vec3 DirectionSampler::brdfCos(const glm::vec3& wi) const {
+    const glm::vec3 l = toShading(wi);
+    if (l.z <= 0.0f)
+        return glm::vec3(0.0f);
+    return m_material->brdf->eval(m_material->params, m_woLocal, l) * l.z;
+}
+
+double DirectionSampler::techniquePdf(Technique t, const glm::vec3& local,
+                                      const glm::dvec3& envLocal) const {
+    switch (t) {
+    case Technique::Uniform:
+        return util::uniformHemispherePdf(local);
+    case Technique::Cosine:
+        return util::cosineHemispherePdf(local);
+    case Technique::Bsdf:
+        return m_material->brdf->pdf(m_material->params, m_woLocal, local);
+    case Technique::Env:
+        return m_tables->environment().pdfLocal(envLocal);
+    case Technique::Product:
+        return m_product->pdfLocal(envLocal);
+    }
+    return 0.0;
+}
+
+double DirectionSampler::mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const {
+    const glm::vec3 local = toShading(wi);
+    double p = 0.0;
+    for (const Component& c : m_components)
+        p += c.weight * techniquePdf(c.technique, local, envLocal);
+    return p;
+}
+
+double DirectionSampler::pdfDouble(const glm::vec3& wi) const {
+    return mixturePdf(wi, m_tables->environment().toLocal(glm::dvec3(wi)));
+}
+
+float DirectionSampler::pdf(const glm::vec3& wi) const { return float(pdfDouble(wi)); }
+
+namespace {
+const char* techniqueName(int t) {
+    static const char* const names[] = {"uniform", "cosine", "bsdf", "env", "product"};
+    return names[t];
+}
+} // namespace
+
+std::vector<ComponentPdf> DirectionSampler::componentPdfs(const glm::vec3& wi) const {
+    const glm::vec3 local = toShading(wi);
+    const glm::dvec3 envLocal = m_tables->environment().toLocal(glm::dvec3(wi));
+    std::vector<ComponentPdf> out;
+    for (const Component& c : m_components)
+        out.push_back({techniqueName(int(c.technique)), c.weight,
+                       techniquePdf(c.technique, local, envLocal)});
+    return out;
+}
+
+DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
+    // u3 picks the technique (cumulative weights); the last one absorbs rounding.
+    size_t pick = 0;
+    double start = 0.0;
+    for (; pick + 1 < m_components.size(); ++pick) {
+        if (double(u3) < start + m_components[pick].weight)
+            break;
+        start += m_components[pick].weight;
+    }
+    const glm::dvec2 u(u1, u2);
+    const SamplerEnvironment& env = m_tables->environment();
+    glm::vec3 wi(0.0f);
+    std::optional<glm::dvec3> envLocal;
+    switch (m_components[pick].technique) {
+    case Technique::Uniform:
+        wi = fromShading(util::sampleUniformHemisphere({u1, u2}));
+        break;
+    case Technique::Cosine:
+        wi = fromShading(util::sampleCosineHemisphere({u1, u2}));
+        break;
+    case Technique::Bsdf: {
+        const plugins::BrdfSample s =
+            m_material->brdf->sample(m_material->params, m_woLocal, u1, u2);
+        if (!s.valid)
+            return {};
+        wi = fromShading(s.wi);
+        break;
+    }
+    case Technique::Env:
+        envLocal = env.sampleLocal(u).direction;
+        break;
+    case Technique::Product:
+        envLocal = m_product->sampleLocal(u).direction;
+        break;
+    }
+    DirectionSample out;
+    out.technique = techniqueName(int(m_components[pick].technique));
+    if (envLocal) {
+        // Tabulated techniques: their pdfs are evaluated at the double direction that was
+        // drawn. Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a
+        // sun's texel next to sky is 1e6 x denser, so pdf(float wi) there would be a firefly.
+        out.wi = glm::vec3(glm::normalize(env.toWorld(*envLocal)));
+        out.pdf = float(mixturePdf(out.wi, *envLocal));
+    } else {
+        out.wi = glm::normalize(wi);
+        out.pdf = pdf(out.wi);
+    }
+    out.valid = std::isfinite(out.wi.x) && out.pdf > 0.0f && std::isfinite(out.pdf);
+    return out;
+}
+
+std::string DirectionSampler::describe() const { return m_describe; }
+
+} // namespace wavelit::render

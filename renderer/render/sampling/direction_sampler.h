@@ -1,0 +1,195 @@
+// Direction samplers for environment lighting at a shading point (issue 6; architecture.md §4, §5.B):
+// one interface for every `--sampler` kind, so both tracers draw, weight and report the same way.
+//
+//   uniform  uniform hemisphere around the shading normal        pdf 1/(2 pi)
+//   cosine   cosine-weighted hemisphere                           pdf cos/pi
+//   bsdf     the material's BRDF sampler (GGX: visible normals)   the plugin's pdf
+//   env      the environment alone, hierarchical over its octahedral map (rotation applied)
+//   mis      one-sample MIS of bsdf and env, 1/2 each: pdf = (p_bsdf + p_env) / 2, which is the
+//            balance heuristic in the one-sample model (f L cos / sum c_i p_i). The path tracers
+//            do not use this mixture: their `mis` is env NEE + BSDF continuation, MIS-weighted
+//            (samplerHasEnvNee below; docs/estimator.md "Direction samplers")
+//   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
+//            refined below its leaves by BRDF-weighted env levels, then the env pyramid,
+//            env_product_sampler.h) for the lobe, plus bsdf (the policy's share, 0.03,
+//            defensive) and env sampling with a per-point share c_env ~ sqrt(M_tail) /
+//            (sqrt(M_tail) + sqrt(M_lobe)) (second moments estimated on 16^2 coarse cells /
+//            4x4 BSDF strata), clamped to [0.02, 0.8]: pdf = sum c_i p_i, so no direction with a
+//            non-zero integrand has zero pdf. Lobes narrower than 2 env texels (policy BsdfLobe)
+//            use bsdf for the lobe + env with the same share rule; black env / all-zero
+//            product: bsdf alone.
+//   oracle   a dense 128^2 product of BRDF x cos and the env over a lobe-fitted window at the
+//            exact reflection vector, refined by the env pyramid (oracle_sampler.h): the ideal
+//            the wavelet sampler approximates; 0.05 bsdf, env share as for wavelet.
+//
+// Contract for the tracers: build DirectionSamplerTables once per scene (and again after change
+// sets touching the environment or a material; rebuilding is per material, see build()), then per
+// shading point construct a DirectionSampler (the wavelet kind does its per-point product work
+// here: ~1k BRDF evaluations + a 32^2 sparse product) and call sample(u1, u2, u3): u3 picks the
+// technique, u1, u2 drive it. The returned pdf is the mixture's pdf in SOLID ANGLE at the
+// direction drawn: pdf(wi) for BSDF-type draws; for env/product draws the tabulated parts are
+// evaluated at the double-precision direction before rounding to float (pdf(wi) agrees except
+// for the ~1e-7 of draws that rounding moves across a texel edge, where the double value is the
+// right one: a sun texel is 1e6 x denser than its neighbours); the estimator is f(wo, wi) L(wi) cos / pdf
+// (never the paper's eq 7). `valid` is false when no direction was produced (e.g. GGX reflected
+// below the horizon); a valid wi may still lie below the surface, where f = 0.
+// All directions are WORLD space unit vectors. Thread-safety: const methods are thread-safe;
+// one DirectionSampler per shading point per thread.
+#pragma once
+
+#include "plugins/brdf.h"
+#include "render/sampling/product/env_product_sampler.h"
+#include "render/sampling/product/env_product_tables.h"
+#include "render/session/render_options.h"
+#include "render/sampling/sampler_environment.h"
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wavelit::render {
+
+// SamplerKind, samplerKindName and parseSamplerKind live in render_options.h (the CLI's flag).
+std::vector<SamplerKind> allSamplerKinds();
+
+// What each kind means in the path tracers (issue 20; docs/estimator.md "Direction samplers"):
+// `uniform`, `cosine` and `bsdf` draw the path's continuation and nothing else; `env`, `mis`,
+// `wavelet` and `oracle` estimate DIRECT environment light by next-event estimation (a direction
+// from this kind's vertex sampler, a shadow ray) and continue the path by BSDF sampling; `mis`
+// MIS-weights the two (power heuristic), `env` counts env light found by the continuation as 0
+// (light sampling alone), `wavelet` and `oracle` MIS-weight their product mixture against the BSDF.
+bool samplerHasEnvNee(SamplerKind kind);
+// The continuation is drawn by a DirectionSampler (uniform, cosine), not by the plugin.
+bool continuationFromSampler(SamplerKind kind);
+// The kind a vertex's DirectionSampler is built with: `mis`'s NEE draws from `env` alone.
+SamplerKind vertexSamplerKind(SamplerKind kind);
+
+// A material as the samplers need it (scene::Material resolved to its plugin).
+struct SamplerMaterial {
+    std::string name;
+    const plugins::Brdf* brdf = nullptr;
+    plugins::BrdfParams params;
+};
+
+// The same plugin with the same parameters: the same tables over the same env (the name is only a
+// label).
+bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
+
+class DirectionSamplerTables {
+public:
+    // Builds the env tables and, for kind Wavelet, the product tables of every material
+    // (materials not in the list get none: list only those the scene uses, architecture.md §7).
+    static std::shared_ptr<const DirectionSamplerTables>
+    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
+          const SamplerEnvironmentOptions& envOptions = {});
+
+    // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
+    // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
+    // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
+    // intensity, tint) with the same envOptions; a material's MaterialProductTables when, in
+    // addition, some previous material has the same plugin and BrdfParams (the tables depend on
+    // the env and on the material only through chooseProductPolicy; comparing the inputs rather
+    // than the policy keeps this correct whatever the policy reads). previous may be nullptr.
+    // The result is identical in content to build() without `previous`.
+    static std::shared_ptr<const DirectionSamplerTables>
+    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
+          const DirectionSamplerTables* previous, const SamplerEnvironmentOptions& envOptions = {});
+
+    SamplerKind kind() const { return m_kind; }
+    const SamplerEnvironment& environment() const { return *m_env; }
+    const scene::Environment& sourceEnvironment() const { return m_source; }
+    const SamplerMaterial& material(size_t i) const { return m_materials[i]; }
+    size_t materialCount() const { return m_materials.size(); }
+    // nullptr unless kind == Wavelet.
+    const MaterialProductTables* productTables(size_t i) const;
+    // Whether build() took the piece from `previous` instead of building it (false without one).
+    bool environmentReused() const { return m_envReused; }
+    bool productTablesReused(size_t i) const;
+    // Multi-line report: env resolution, per-material choice and reason, bytes, build times
+    // (of the build that made each piece; "reused" marks pieces taken from `previous`).
+    std::string report() const;
+
+private:
+    SamplerKind m_kind = SamplerKind::Wavelet;
+    scene::Environment m_source;
+    SamplerEnvironmentOptions m_envOptions;
+    // Shared with the tables this one was built from, and with those built from it: immutable.
+    std::shared_ptr<const SamplerEnvironment> m_env;
+    bool m_envReused = false;
+    std::vector<SamplerMaterial> m_materials;
+    std::vector<std::shared_ptr<const MaterialProductTables>> m_products;
+    std::vector<bool> m_productReused;
+};
+
+// The shading configuration: an orthonormal frame (n = shading normal, t, b tangents; the BRDF's
+// local frame is (t, b, n)), the direction toward the viewer, and the material's index in the
+// tables.
+struct ShadingPoint {
+    glm::vec3 n{0.0f, 1.0f, 0.0f}, t{1.0f, 0.0f, 0.0f}, b{0.0f, 0.0f, -1.0f};
+    glm::vec3 wo{0.0f, 1.0f, 0.0f};
+    size_t material = 0;
+};
+
+struct DirectionSample {
+    glm::vec3 wi{0.0f};
+    float pdf = 0.0f; // solid angle
+    bool valid = false;
+    const char* technique = ""; // the mixture component that drew wi (for path records)
+};
+
+// One mixture component's share and pdf at a direction (path records, issue 20).
+struct ComponentPdf {
+    const char* technique;
+    double weight;
+    double pdf; // solid angle, of the component alone
+};
+
+class DirectionSampler {
+public:
+    // `tables` must outlive the sampler. `kind` may differ from tables.kind() except that
+    // Wavelet needs tables built for Wavelet (others fall back to bsdf + env mixing).
+    DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
+                     const ShadingPoint& point);
+
+    DirectionSample sample(float u1, float u2, float u3) const;
+    float pdf(const glm::vec3& wi) const;
+    double pdfDouble(const glm::vec3& wi) const;
+    // Every component's share and own pdf at world direction wi (sum of weight x pdf = pdf(wi)).
+    std::vector<ComponentPdf> componentPdfs(const glm::vec3& wi) const;
+    // What this sampler does at this point and why (for the render report).
+    std::string describe() const;
+
+    // f(wo, wi) cos(theta_i) as RGB, the BRDF part of the integrand (0 below the surface).
+    glm::vec3 brdfCos(const glm::vec3& wi) const;
+
+private:
+    enum class Technique { Uniform, Cosine, Bsdf, Env, Product };
+    struct Component {
+        Technique technique;
+        double weight;
+    };
+    glm::vec3 toShading(const glm::vec3& w) const;
+    glm::vec3 fromShading(const glm::vec3& w) const;
+    double techniquePdf(Technique t, const glm::vec3& local, const glm::dvec3& envLocal) const;
+    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const;
+    void addProduct(SamplerKind kind);
+    double productLobeMoment() const;
+    double bsdfLobeMoment() const;
+    double tailEnvMoment(const glm::dvec3& axisLocal, double capAngle) const;
+
+    const DirectionSamplerTables* m_tables;
+    SamplerKind m_kind;
+    ShadingPoint m_point;
+    const SamplerMaterial* m_material;
+    glm::vec3 m_woLocal;
+    std::vector<Component> m_components;
+    std::optional<EnvProductSampler> m_product;
+    std::string m_describe;
+};
+
+} // namespace wavelit::render

@@ -1,0 +1,140 @@
+// EnvProductSampler: one shading point's product distribution env x (BRDF x cos) over a
+// ProductWindow of the octahedral square, refined below its leaves by the environment's own
+// pyramid (architecture.md §4.1, items 1 and 2), with an exact pdf.
+//
+// Two ways to get the product's scaling-coefficient quadtree (2^m over the window):
+//  - buildSparse: the paper's path. The env factor is a truncated Haar image (K largest, from the
+//    per-reflection-direction tables, env_product_tables.h); the BRDF x cos factor is tabulated
+//    over the window for THIS shading point and truncated; their product pyramid comes from the
+//    wavelet core's sparse product (wavelet/product.h).
+//  - buildDense: a dense grid of the product (the `oracle`, oracle_sampler.h).
+// Sampling descends the product's quadtree (float tables, clamped at 0) to a leaf, then descends
+// the environment's full-resolution quadtree restricted to that leaf (the BRDF taken as constant
+// inside it). pdf = P(product leaf) x the env's conditional density in the leaf / 4 pi.
+// A product leaf at the window's root level is split into its four quarters uniformly (the
+// window's origin is only aligned to half its side, see sampler_window.h).
+// Lobe refinement (optional, setLobeRefinement): for a few levels below a product leaf the env's
+// four children are weighted by their cell averages times the BRDF x cos at their centres (plus
+// a small floor), then the env's quadtree alone takes over. A 2^m product over a window several
+// lobe widths wide sees the lobe's peak in a handful of leaves; inside them the BRDF is far from
+// constant, and the product's resolution is capped (m <= 5: the GPU keeps the product in private
+// memory). The weights are a deterministic function of the cell, so sample and pdf agree
+// exactly; no table is needed (4 BRDF evaluations per refined level, per draw and per pdf).
+// Measures: directions are ENV-LOCAL (SamplerEnvironment::toLocal); pdf per unit solid angle,
+// 0 outside the window. Holds a reference to the SamplerEnvironment, which must outlive it.
+#pragma once
+
+#include "render/sampling/sampler_environment.h"
+#include "render/sampling/sampler_window.h"
+#include "wavelet/hierarchical_sampler.h"
+#include "wavelet/sparse_haar.h"
+#include "wavelet/square_grid.h"
+
+#include <functional>
+#include <optional>
+
+namespace wavelit::render {
+
+class EnvProductSampler {
+public:
+    // nullopt when the (clamped) product is zero everywhere: the caller falls back to the BSDF.
+    static std::optional<EnvProductSampler> buildSparse(const SamplerEnvironment& env,
+                                                        ProductWindow window,
+                                                        const wavelet::SparseHaar& envFactor,
+                                                        const wavelet::SquareGrid& brdfGrid,
+                                                        size_t brdfKeep);
+    static std::optional<EnvProductSampler> buildDense(const SamplerEnvironment& env,
+                                                       ProductWindow window,
+                                                       const wavelet::SquareGrid& productGrid);
+
+    // brdfCos: luminance of f(wo, wi) cos(theta_i) for an ENV-LOCAL wi (captured by value: the
+    // sampler may outlive the caller's frame). levels: how many env levels below a product leaf
+    // are weighted by it (0: none; never below the env's finest level).
+    void setLobeRefinement(std::function<double(const glm::dvec3&)> brdfCos, int levels);
+    int lobeRefinementLevels() const { return m_refineLevels; }
+
+    wavelet::DirectionSample sampleLocal(glm::dvec2 u) const;
+    double pdfLocal(const glm::dvec3& local) const;
+
+    const ProductWindow& window() const { return m_window; }
+    // Integral over the window's solid angle of the (clamped) product it samples.
+    double integralSolidAngle() const;
+    size_t nodeCount() const { return m_product.nodeCount(); }
+
+private:
+    EnvProductSampler(const SamplerEnvironment& env, ProductWindow window,
+                      wavelet::HierarchicalSampler product)
+        : m_env(&env), m_window(window), m_product(std::move(product)) {}
+    wavelet::SquareCell globalLeaf(wavelet::SquareCell leaf) const;
+    // The lobe-refinement weights of the four children (x-major) of global cell `cell`.
+    void childWeights(wavelet::SquareCell cell, double w[4]) const;
+    int refineStop(const wavelet::SquareCell& cell) const;
+
+    const SamplerEnvironment* m_env;
+    ProductWindow m_window;
+    wavelet::HierarchicalSampler m_product;
+    std::function<double(const glm::dvec3&)> m_brdfCos;
+    int m_refineLevels = 0;
+};
+
+// The env factor over a window at level m: average luminance of each global cell (level k + m).
+wavelet::SquareGrid windowEnvGrid(const SamplerEnvironment& env, ProductWindow window, int m);
+
+// Tabulates f(direction) over a window at level m, averaging supersample^2 points per texel.
+template <typename F>
+wavelet::SquareGrid windowTabulate(const wavelet::OctahedralMap& map, ProductWindow window, int m,
+                                   F&& f, int supersample = 2) {
+    wavelet::SquareGrid grid(m);
+    const int side = grid.size();
+    const double inv = 1.0 / (double(side) * supersample);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            double sum = 0.0;
+            for (int j = 0; j < supersample; ++j)
+                for (int i = 0; i < supersample; ++i) {
+                    const glm::dvec2 local((x * supersample + i + 0.5) * inv,
+                                           (y * supersample + j + 0.5) * inv);
+                    sum += f(map.toDirection(0, window.toGlobal(local)));
+                }
+            grid.at(x, y) = sum / double(supersample * supersample);
+        }
+    return grid;
+}
+
+// Tabulates f over a window at level m as its ENV-WEIGHTED average per texel: texel (x, y) holds
+// sum_s L_s f(c_s) / sum_s L_s over its supersample^2 sub-cells s (L_s: the env's average over the
+// sub-cell, c_s its centre; supersample a power of two). Times the env factor's texel average
+// this is the mean of L f over the sub-cells, so the product's leaf masses are those of the
+// product at the sub-cells' resolution, not a product of two averages (which misplaces a sun
+// sitting in the steep part of a lobe).
+template <typename F>
+wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, ProductWindow window,
+                                              int m, F&& f, int supersample = 2) {
+    wavelet::SquareGrid grid(m);
+    const int side = grid.size();
+    int shift = 0;
+    while ((1 << shift) < supersample)
+        ++shift;
+    const double inv = 1.0 / (double(side) * supersample);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            double sum = 0.0, weight = 0.0, plain = 0.0;
+            for (int j = 0; j < supersample; ++j)
+                for (int i = 0; i < supersample; ++i) {
+                    int gl, gx, gy;
+                    window.globalCell(m + shift, x * supersample + i, y * supersample + j, gl, gx,
+                                      gy);
+                    const double w = env.cellAverage(gl, gx, gy);
+                    const glm::dvec2 local((x * supersample + i + 0.5) * inv,
+                                           (y * supersample + j + 0.5) * inv);
+                    const double v = f(env.map().toDirection(0, window.toGlobal(local)));
+                    sum += w * v;
+                    weight += w;
+                    plain += v;
+                }
+            grid.at(x, y) = weight > 0.0 ? sum / weight : plain / double(supersample * supersample);
+        }
+    return grid;
+}
+
+} // namespace wavelit::render

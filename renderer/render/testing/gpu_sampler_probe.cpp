@@ -1,0 +1,314 @@
+#include "render/testing/gpu_sampler_probe.h"
+
+#include "render/gpu/gpu_path_tracer.h"
+#include "render/gpu/gpu_scene_data.h"
+#include "util/hemisphere_sampling.h"
+#include "util/image.h"
+#include "vk/buffer.h"
+#include "vk/command_runner.h"
+#include "vk/compute_kernel.h"
+#include "vk/shader_compiler.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace wavelit::render {
+namespace {
+
+constexpr int kHeaderFloats = 10; // shares (5), window (k, ox, oy), m, refine levels
+constexpr double kFourPi = 4.0 * std::numbers::pi;
+
+int infoFloats(SamplerKind kind) { return kHeaderFloats + gpuPyramidFloats(kind); }
+
+// Inputs per point: t, b, n, wo (world; w of n = BRDF type, w of wo = roughness), base colour.
+// Outputs per draw: (wi, pdf); per point (from its draw 0): the mixture's pieces.
+std::string kernelSource(SamplerKind kind) {
+    const bool oracle = kind == SamplerKind::Oracle;
+    return std::string(R"(#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+)") + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
+layout(local_size_x = 64) in;
+#include "common/sampler_structs.glsl"
+layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };
+layout(std430, binding = 1) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
+layout(std430, binding = 2) readonly buffer SamplerWords { uint samplerWords[]; };
+layout(std430, binding = 3) readonly buffer In { vec4 inputs[]; };
+layout(std430, binding = 4) buffer Samples { vec4 samples[]; };
+layout(std430, binding = 5) buffer Info { float info[]; };
+layout(push_constant) uniform Push { uint drawsPerPoint, points, tailOffset, lit; float envMean, cosYaw, sinYaw; int envLevel; uint kind, seedLo, seedHi; } pc;
+#include "common/direction_sampler.glsl"
+#include "common/rng.glsl"
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pc.drawsPerPoint * pc.points) return;
+    uint c = i / pc.drawsPerPoint;
+    vec4 t = inputs[5u * c], b = inputs[5u * c + 1u], n = inputs[5u * c + 2u], wo = inputs[5u * c + 3u];
+    vec3 color = inputs[5u * c + 4u].rgb;
+    Frame f;
+    f.t = t.xyz;
+    f.b = b.xyz;
+    f.n = n.xyz;
+    SamplerGlobals g;
+    g.kind = pc.kind;
+    g.lit = pc.lit != 0u;
+    g.tailOffset = pc.tailOffset;
+    g.envMean = pc.envMean;
+    g.envLevel = pc.envLevel;
+    g.cosSinYaw = vec2(pc.cosYaw, pc.sinYaw);
+    DirSampler s = dsSetup(g, samplerMaterials[c], f, frameToLocal(f, wo.xyz), uint(n.w), color, wo.w);
+    Pcg32 rng = pcgSeed((uint64_t(pc.seedHi) << 32) + uint64_t(pc.seedLo) + uint64_t(c), uint64_t(i));
+    float u1 = pcgFloat(rng);
+    float u2 = pcgFloat(rng);
+    float u3 = pcgFloat(rng);
+    vec3 wi;
+    float pdf;
+    bool valid = dsSample(s, u1, u2, u3, wi, pdf);
+    samples[i] = valid ? vec4(wi, pdf) : vec4(0.0, 0.0, 0.0, -1.0);
+    if (i % pc.drawsPerPoint == 0u) {
+        uint base = c * uint()" + std::to_string(infoFloats(kind)) + R"();
+        float header[10] = float[10](s.cProduct, s.cBsdf, s.cEnv, s.cUniform, s.cCosine, float(s.k),
+                                     float(s.ox), float(s.oy), float(s.m), float(s.refineLevels));
+        for (int k = 0; k < 10; ++k) info[base + uint(k)] = header[k];
+        for (int k = 0; k < )" + std::to_string(gpuPyramidFloats(kind)) + R"(; ++k) info[base + 10u + uint(k)] = gMass[k];
+    }
+}
+)";
+}
+
+glm::vec3 toLocal(const ShadingPoint& p, const glm::vec3& w) {
+    return {glm::dot(w, p.t), glm::dot(w, p.b), glm::dot(w, p.n)};
+}
+
+double share(double part, double whole) { return whole > 0.0 ? part / whole : 0.5; }
+
+} // namespace
+
+int gpuPyramidFloats(SamplerKind kind) {
+    const int m = kind == SamplerKind::Oracle ? kGpuOracleLevel : kGpuMaxProductLevel;
+    return ((1 << (2 * (m + 1))) - 1) / 3;
+}
+
+double GpuMixture::brdfCos(const glm::vec3& wi) const {
+    const glm::vec3 local = toLocal(point, wi);
+    if (local.z <= 0.0f)
+        return 0.0;
+    return double(util::luminance(
+        material->brdf->eval(material->params, toLocal(point, point.wo), local) * local.z));
+}
+
+// dsRefineWeights: the env table's split of the cell times BRDF x cos at the children's centres,
+// plus 2% of the largest.
+void GpuMixture::refineWeights(int l, int x, int y, double w[4]) const {
+    const auto& table = env->fine().table();
+    int node = 0, reached = 0;
+    while (reached < l && table[size_t(node)].firstChild >= 0) {
+        const int shift = l - reached - 1;
+        node = table[size_t(node)].firstChild + (((x >> shift) & 1) | (((y >> shift) & 1) << 1));
+        ++reached;
+    }
+    for (int c = 0; c < 4; ++c)
+        w[c] = 1.0;
+    if (reached == l && table[size_t(node)].firstChild >= 0) {
+        auto split = [](float s, double& p0, double& p1) {
+            if (std::signbit(s)) {
+                p1 = -double(s);
+                p0 = 1.0 - p1;
+            } else {
+                p0 = double(s);
+                p1 = 1.0 - p0;
+            }
+        };
+        double py0, py1, pl0, pr0, pl1, pr1;
+        split(table[size_t(node)].py0, py0, py1);
+        split(table[size_t(node)].px0y0, pl0, pr0);
+        split(table[size_t(node)].px0y1, pl1, pr1);
+        w[0] = py0 * pl0;
+        w[1] = py0 * pr0;
+        w[2] = py1 * pl1;
+        w[3] = py1 * pr1;
+    }
+    const double side = std::ldexp(1.0, -(l + 1));
+    double h[4], hmax = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        const glm::dvec2 centre((2 * x + (c & 1) + 0.5) * side, (2 * y + (c >> 1) + 0.5) * side);
+        h[c] = brdfCos(glm::vec3(env->toWorld(env->map().toDirection(0, centre))));
+        hmax = std::max(hmax, h[c]);
+    }
+    if (hmax > 0.0 && std::isfinite(hmax))
+        for (int c = 0; c < 4; ++c)
+            w[c] *= h[c] + 0.02 * hmax;
+}
+
+double GpuMixture::productPdf(glm::dvec2 p) const {
+    const int level = k + m, shift = m - 1, side = 1 << m;
+    const double scale = std::ldexp(1.0, level);
+    const int gx = int(p.x * scale), gy = int(p.y * scale);
+    const int lx = gx - (ox << shift), ly = gy - (oy << shift);
+    if (lx < 0 || ly < 0 || lx >= side || ly >= side)
+        return 0.0;
+    double probability = 1.0;
+    int x = 0, y = 0;
+    for (int l = 0; l < m; ++l) {
+        const int s = 1 << (l + 1), off = ((1 << (2 * (l + 1))) - 1) / 3;
+        const size_t c0 = size_t(off + 2 * y * s + 2 * x), c1 = c0 + size_t(s);
+        const double a = mass[c0], b = mass[c0 + 1], c = mass[c1], d = mass[c1 + 1];
+        const int cx = (lx >> (m - 1 - l)) & 1, cy = (ly >> (m - 1 - l)) & 1;
+        const double row = cy == 0 ? a + b : c + d;
+        const double column = cy == 0 ? (cx == 0 ? a : b) : (cx == 0 ? c : d);
+        probability *= share(row, a + b + c + d) * share(column, row);
+        x = 2 * x + cx;
+        y = 2 * y + cy;
+    }
+    int l = level, x2 = gx, y2 = gy;
+    for (int r = 0; r < refineLevels; ++r) {
+        double w[4];
+        refineWeights(l, x2, y2, w);
+        const double scale2 = std::ldexp(1.0, l + 1);
+        const int cx = std::clamp(int(p.x * scale2) - 2 * x2, 0, 1);
+        const int cy = std::clamp(int(p.y * scale2) - 2 * y2, 0, 1);
+        const double row = cy == 0 ? w[0] + w[1] : w[2] + w[3];
+        probability *= share(row, w[0] + w[1] + w[2] + w[3]) * share(w[2 * cy + cx], row);
+        ++l;
+        x2 = 2 * x2 + cx;
+        y2 = 2 * y2 + cy;
+    }
+    return probability * env->fine().pdfWithin({l, x2, y2}, p);
+}
+
+double GpuMixture::pdf(const glm::vec3& wi) const {
+    const glm::vec3 local = toLocal(point, wi);
+    double v = cUniform * double(util::uniformHemispherePdf(local)) +
+               cCosine * double(util::cosineHemispherePdf(local));
+    if (cBsdf > 0)
+        v += cBsdf * material->brdf->pdf(material->params, toLocal(point, point.wo), local);
+    if (cEnv > 0)
+        v += cEnv * env->pdfLocal(env->toLocal(glm::dvec3(wi)));
+    if (cProduct > 0)
+        v += cProduct *
+             productPdf(octSquarePoint(env->map(), env->toLocal(glm::dvec3(wi)))) / kFourPi;
+    return v;
+}
+
+util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
+                                             const DirectionSamplerTables& tables, SamplerKind kind,
+                                             const std::vector<ShadingPoint>& points,
+                                             int drawsPerPoint, uint64_t seed) {
+    if (points.empty() || drawsPerPoint < 1)
+        return util::makeError(util::ErrorKind::Invalid, "", "probe: no points or draws");
+    if (!context.hasFloat64())
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               context.deviceName() + ": the samplers need shaderFloat64");
+    SceneSamplerTables scene;
+    scene.tables = std::shared_ptr<const DirectionSamplerTables>(
+        std::shared_ptr<const DirectionSamplerTables>{}, &tables); // not owned
+    std::vector<float> in;
+    for (const ShadingPoint& p : points) {
+        if (p.material >= tables.materialCount())
+            return util::makeError(util::ErrorKind::Invalid, "", "probe: material out of range");
+        const SamplerMaterial& m = tables.material(p.material);
+        const std::string name = m.brdf->name();
+        if (name != "ggx" && name != "lambert")
+            return util::makeError(util::ErrorKind::Unsupported, "",
+                                   "probe: BRDF '" + name + "' has no GLSL twin");
+        scene.samplerIndexOfMaterial.push_back(int(p.material));
+        const float type = float(name == "ggx" ? kGpuBrdfGgx : kGpuBrdfLambert);
+        const float v[20] = {p.t.x,  p.t.y,  p.t.z,  0,    p.b.x,  p.b.y,  p.b.z,
+                             0,      p.n.x,  p.n.y,  p.n.z, type, p.wo.x, p.wo.y,
+                             p.wo.z, m.params.roughness, m.params.baseColor.x,
+                             m.params.baseColor.y, m.params.baseColor.z, 0};
+        in.insert(in.end(), v, v + 20);
+    }
+    auto packed = packGpuSamplers(scene, kind, points.size());
+    if (!packed)
+        return packed.error();
+    auto spirv = vk::compileComputeShader(kernelSource(kind), "gpu_sampler_probe.comp",
+                                          {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
+    if (!spirv)
+        return spirv.error();
+    const size_t total = points.size() * size_t(drawsPerPoint);
+    const int perPoint = infoFloats(kind);
+    std::vector<float> samples(total * 4), info(points.size() * size_t(perPoint));
+    const int validationBefore = context.validationMessageCount();
+    {
+        auto kernel = vk::ComputeKernel::create(
+            context, {"gpu sampler probe", *spirv,
+                      std::vector<vk::BindingKind>(6, vk::BindingKind::StorageBuffer), 44});
+        if (!kernel)
+            return kernel.error();
+        const GpuSamplerData& d = *packed;
+        struct Blob {
+            const void* data;
+            size_t bytes;
+        } blobs[] = {{d.envNodes.data(), d.envNodes.size() * sizeof(d.envNodes[0])},
+                     {d.materials.data(), d.materials.size() * sizeof(GpuSamplerMaterial)},
+                     {d.words.data(), d.words.size() * sizeof(uint32_t)},
+                     {in.data(), in.size() * sizeof(float)},
+                     {nullptr, samples.size() * sizeof(float)},
+                     {nullptr, info.size() * sizeof(float)}};
+        std::vector<vk::Buffer> buffers;
+        for (uint32_t i = 0; i < 6; ++i) {
+            auto b = vk::Buffer::create(context, blobs[i].bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        "probe buffer");
+            if (!b)
+                return b.error();
+            if (blobs[i].data)
+                b->write(blobs[i].data, blobs[i].bytes);
+            buffers.push_back(std::move(b.value()));
+            kernel->bind(i, buffers.back());
+        }
+        const double yaw = double(tables.sourceEnvironment().rotationDeg) * std::numbers::pi / 180.0;
+        struct {
+            uint32_t drawsPerPoint, points, tailOffset, lit;
+            float envMean, cosYaw, sinYaw;
+            int32_t envLevel;
+            uint32_t kind, seedLo, seedHi;
+        } push{uint32_t(drawsPerPoint), uint32_t(points.size()), d.tailOffset, d.lit ? 1u : 0u,
+               d.envMean, float(std::cos(yaw)), float(std::sin(yaw)), int32_t(d.envLevel),
+               d.kind, uint32_t(seed), uint32_t(seed >> 32)};
+        static_assert(sizeof(push) == 44);
+        auto runner = vk::CommandRunner::create(context, "gpu sampler probe");
+        if (!runner)
+            return runner.error();
+        if (auto s = (*runner)->run([&](VkCommandBuffer cmd) {
+                kernel->dispatch(cmd, uint32_t((total + 63) / 64), 1, 1, &push);
+                vk::computeToComputeAndHostBarrier(cmd);
+            });
+            !s)
+            return s.error();
+        buffers[4].read(samples.data(), samples.size() * sizeof(float));
+        buffers[5].read(info.data(), info.size() * sizeof(float));
+    }
+    GpuProbeResult r;
+    r.validationMessages = context.validationMessageCount() - validationBefore;
+    for (size_t c = 0; c < points.size(); ++c) {
+        const float* f = &info[c * size_t(perPoint)];
+        GpuMixture mix;
+        mix.cProduct = f[0];
+        mix.cBsdf = f[1];
+        mix.cEnv = f[2];
+        mix.cUniform = f[3];
+        mix.cCosine = f[4];
+        mix.k = int(f[5]);
+        mix.ox = int(f[6]);
+        mix.oy = int(f[7]);
+        mix.m = int(f[8]);
+        mix.refineLevels = int(f[9]);
+        mix.mass.assign(f + kHeaderFloats, f + perPoint);
+        mix.env = &tables.environment();
+        mix.material = &tables.material(points[c].material);
+        mix.point = points[c];
+        r.mixtures.push_back(std::move(mix));
+    }
+    r.draws.resize(total);
+    for (size_t i = 0; i < total; ++i)
+        r.draws[i] = {glm::vec3(samples[4 * i], samples[4 * i + 1], samples[4 * i + 2]),
+                      samples[4 * i + 3]};
+    return r;
+}
+
+} // namespace wavelit::render
