@@ -53,11 +53,42 @@ struct BrdfParameterInfo {
     const char* tooltip;
 };
 
+// Lobe traits: what the samplers and the GPU tracer need to know about a plugin without naming it
+// (issue 11). The axis decides where the env-product and oracle windows are centred.
+enum class BrdfLobeAxis {
+    Normal, // diffuse: the lobe sits about the shading normal
+    Mirror, // glossy: the lobe sits about the mirror direction of wo
+};
+
+struct BrdfLobeWidth {
+    // Angular half-width of the lobe about its axis (radians): the scale the env product resolves.
+    double halfWidth = 0.0;
+    // Half-angle of the cone about the axis that holds the lobe (radians; >= pi: the whole sphere).
+    // The oracle fits its window to it (render/sampling/oracle_sampler.h).
+    double capHalfAngle = 0.0;
+};
+
+// The GLSL twin: a snippet file in plugins/ and the functions it defines, with the signatures
+//   bool S(vec3 baseColor, float roughness, vec3 wo, float u1, float u2, out vec3 wi, out vec3 f, out float pdf)
+//   vec3 E(vec3 baseColor, float roughness, vec3 wo, vec3 wi)
+//   float P(float roughness, vec3 wo, vec3 wi)
+// The GPU tracer splices the snippets in and generates the dispatch on the registry index.
+// Empty strings: the plugin has no GPU twin (the GPU tracer refuses it by name).
+struct BrdfGpuTwin {
+    const char* snippet = "";
+    const char* sampleFn = "";
+    const char* evalFn = "";
+    const char* pdfFn = "";
+};
+
 class Brdf {
 public:
     virtual ~Brdf() = default;
     virtual const char* name() const = 0;
     virtual std::span<const BrdfParameterInfo> parameters() const = 0;
+    virtual BrdfLobeAxis lobeAxis() const = 0;
+    virtual BrdfLobeWidth lobeWidth(const BrdfParams& p) const = 0;
+    virtual BrdfGpuTwin gpuTwin() const = 0;
 
     virtual glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const = 0;
     virtual BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const = 0;
@@ -70,5 +101,17 @@ public:
 const Brdf* findBrdf(std::string_view name);
 // Names of every registered plugin, in registration order.
 std::vector<std::string> brdfNames();
+// Every registered plugin, in registration order; a plugin's index is its GPU type code.
+std::span<const Brdf* const> brdfRegistry();
+// The registry index of `brdf` (its GPU type code); -1 when it is not registered.
+int brdfIndex(const Brdf& brdf);
+// The BRDF a new material gets: the first registered plugin.
+const char* defaultBrdfName();
+// What is wrong with a plugin's traits (an unknown lobe axis, a non-finite or non-positive lobe
+// width), empty when they are coherent. Checked where a plugin is used, so a bad plugin is an
+// error with its name, never another plugin's policy.
+std::string brdfTraitsProblem(const Brdf& brdf);
+// Same for the GLSL twin: empty when the plugin has a snippet and all three functions.
+std::string brdfGpuTwinProblem(const Brdf& brdf);
 
 } // namespace wavelit::plugins

@@ -1,9 +1,12 @@
 // The registry of BRDF plugins: one line per plugin. Plugins do not self-register through static
 // constructors because wavelit_plugins is a static library: the linker drops an object file no
 // one references, and its registration with it. Listing them here references every plugin.
+// A plugin's position is its GPU type code, so the order is part of the GPU contract only within
+// one run (the dispatch is generated from the same list at pipeline creation).
 #include "plugins/brdf.h"
 
 #include <array>
+#include <cmath>
 
 namespace wavelit::plugins {
 
@@ -28,6 +31,47 @@ std::vector<std::string> brdfNames() {
     std::vector<std::string> names;
     for (const Brdf* b : registry()) names.emplace_back(b->name());
     return names;
+}
+
+std::span<const Brdf* const> brdfRegistry() { return registry(); }
+
+int brdfIndex(const Brdf& brdf) {
+    for (size_t i = 0; i < registry().size(); ++i)
+        if (registry()[i] == &brdf) return int(i);
+    return -1;
+}
+
+const char* defaultBrdfName() { return registry().front()->name(); }
+
+std::string brdfTraitsProblem(const Brdf& brdf) {
+    const std::string who = std::string("BRDF '") + brdf.name() + "': ";
+    switch (brdf.lobeAxis()) {
+    case BrdfLobeAxis::Normal:
+    case BrdfLobeAxis::Mirror:
+        break;
+    default:
+        return who + "unknown lobe axis " + std::to_string(int(brdf.lobeAxis())) +
+               " (neither normal nor mirror)";
+    }
+    // The width must be usable for every roughness the parameters allow.
+    for (float r : {0.0f, 0.5f, 1.0f}) {
+        BrdfParams p;
+        p.roughness = r;
+        const BrdfLobeWidth w = brdf.lobeWidth(p);
+        if (!(std::isfinite(w.halfWidth) && w.halfWidth > 0.0 && std::isfinite(w.capHalfAngle) &&
+              w.capHalfAngle > 0.0))
+            return who + "lobe width not finite and positive at roughness " + std::to_string(r);
+    }
+    return {};
+}
+
+std::string brdfGpuTwinProblem(const Brdf& brdf) {
+    const BrdfGpuTwin t = brdf.gpuTwin();
+    auto empty = [](const char* s) { return s == nullptr || *s == '\0'; };
+    if (empty(t.snippet) || empty(t.sampleFn) || empty(t.evalFn) || empty(t.pdfFn))
+        return std::string("BRDF '") + brdf.name() +
+               "' has no GPU twin (a GLSL snippet with sample, eval and pdf functions)";
+    return {};
 }
 
 } // namespace wavelit::plugins

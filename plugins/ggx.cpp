@@ -98,6 +98,22 @@ class Ggx final : public Brdf {
 public:
     const char* name() const override { return "ggx"; }
     std::span<const BrdfParameterInfo> parameters() const override { return kParameters; }
+    BrdfLobeAxis lobeAxis() const override { return BrdfLobeAxis::Mirror; }
+
+    // Half-width in wi: D(h) halves at theta_h ~ 0.64 alpha and wi turns twice as fast as h, so
+    // ~1.3 alpha; 2 alpha keeps the shoulder. The cap is 3 half-widths (6 alpha): the oracle's
+    // window, kept so its figures stay comparable across the variance study (docs/sampler-variance.md).
+    // In double, as the samplers computed it before the traits existed.
+    BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
+        constexpr double kHalfWidthPerAlpha = 2.0;
+        constexpr double kCapPerAlpha = 6.0;
+        const double alpha = std::max(double(p.roughness) * p.roughness, 1e-4);
+        return {kHalfWidthPerAlpha * alpha, kCapPerAlpha * alpha};
+    }
+
+    BrdfGpuTwin gpuTwin() const override {
+        return {"ggx.glsl", "ggxSample", "ggxEval", "ggxPdf"};
+    }
 
     glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
         if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);

@@ -6,6 +6,7 @@
 #include "util/hemisphere_sampling.h"
 
 #include <array>
+#include <numbers>
 
 namespace wavelit::plugins {
 namespace {
@@ -19,6 +20,17 @@ class Lambert final : public Brdf {
 public:
     const char* name() const override { return "lambert"; }
     std::span<const BrdfParameterInfo> parameters() const override { return kParameters; }
+    BrdfLobeAxis lobeAxis() const override { return BrdfLobeAxis::Normal; }
+
+    // The clamped cosine about the normal: a half-width of pi/2 and, since the whole hemisphere
+    // holds it, a cap past pi (3.2 rad: the oracle then covers the whole sphere).
+    BrdfLobeWidth lobeWidth(const BrdfParams&) const override {
+        return {0.5 * std::numbers::pi, 3.2};
+    }
+
+    BrdfGpuTwin gpuTwin() const override {
+        return {"lambert.glsl", "lambertSample", "lambertEval", "lambertPdf"};
+    }
 
     glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
         if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);

@@ -46,7 +46,7 @@ void expectOracleLeavesMatchTheCpu(const GpuMixture& mix) {
     const bool lambert = std::string(mix.material->brdf->name()) == "lambert";
     const glm::vec3 axisWorld = lambert ? mix.point.n : reflectionOf(mix.point);
     const glm::dvec3 axis = env.toLocal(glm::normalize(glm::dvec3(axisWorld)));
-    const double cap = oracleCapHalfAngle(lambert, mix.material->params.roughness);
+    const double cap = oracleCapHalfAngle(*mix.material->brdf, mix.material->params);
     const ProductWindow window =
         chooseWindow(env.map(), axis, cap, std::max(1, env.level() + 6 - kGpuOracleLevel));
     EXPECT_EQ(mix.k, window.k);

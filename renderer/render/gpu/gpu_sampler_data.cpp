@@ -17,12 +17,11 @@ namespace {
 
 // The oracle needs no tables: its material entry says how to fit and mix the per-hit product.
 GpuSamplerMaterial oracleMaterial(const SamplerMaterial& m) {
-    const bool lambert = std::string(m.brdf->name()) == "lambert";
     GpuSamplerMaterial g;
     g.mode = kGpuSamplerOracle;
     g.mixBsdf = float(kOracleBsdfShare);
-    g.capHalfAngle = float(oracleCapHalfAngle(lambert, m.params.roughness));
-    g.aroundNormal = lambert ? 1u : 0u;
+    g.capHalfAngle = float(oracleCapHalfAngle(*m.brdf, m.params));
+    g.aroundNormal = m.brdf->lobeAxis() == plugins::BrdfLobeAxis::Normal ? 1u : 0u;
     g.refineMaxLevels = kGpuOracleRefineLevels;
     g.refineCellAngle = 1e-30f; // refine by level count only
     return g;

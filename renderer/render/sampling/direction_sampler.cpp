@@ -166,9 +166,9 @@ DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, Sampler
 
 void DirectionSampler::addProduct(SamplerKind kind) {
     const SamplerEnvironment& env = m_tables->environment();
-    const bool lambert = std::string(m_material->brdf->name()) == "lambert";
+    const bool aroundNormal = m_material->brdf->lobeAxis() == plugins::BrdfLobeAxis::Normal;
     const glm::vec3 n = m_point.n, wo = m_point.wo;
-    const glm::vec3 axisWorld = lambert ? n : 2.0f * glm::dot(wo, n) * n - wo;
+    const glm::vec3 axisWorld = aroundNormal ? n : 2.0f * glm::dot(wo, n) * n - wo;
     const glm::dvec3 axis = env.toLocal(glm::normalize(glm::dvec3(axisWorld)));
     auto brdfCosLocal = [&](const glm::dvec3& dLocal) {
         return double(util::luminance(brdfCos(glm::vec3(env.toWorld(dLocal)))));
@@ -179,7 +179,7 @@ void DirectionSampler::addProduct(SamplerKind kind) {
         return;
     }
     double bsdfShare = kOracleBsdfShare;
-    double capAngle = oracleCapHalfAngle(lambert, m_material->params.roughness);
+    double capAngle = oracleCapHalfAngle(*m_material->brdf, m_material->params);
     if (kind == SamplerKind::Oracle) {
         m_product = buildOracleProduct(env, axis, capAngle, brdfCosLocal);
         m_describe = m_product ? "oracle: dense 128^2 product, refined" : "oracle: all-zero "

@@ -7,9 +7,8 @@
 
 namespace wavelit::render {
 
-double oracleCapHalfAngle(bool lambert, float roughness) {
-    constexpr double kCapPerAlpha = 6.0;
-    return lambert ? 3.2 : kCapPerAlpha * ggxAlpha(roughness);
+double oracleCapHalfAngle(const plugins::Brdf& brdf, const plugins::BrdfParams& params) {
+    return brdf.lobeWidth(params).capHalfAngle;
 }
 
 std::optional<EnvProductSampler>

@@ -11,6 +11,7 @@
 
 #include "render/sampling/product/env_product_sampler.h"
 #include "render/sampling/sampler_environment.h"
+#include "plugins/brdf.h"
 
 #include <functional>
 #include <optional>
@@ -21,10 +22,9 @@ namespace wavelit::render {
 // outside its window (and cells the dense grid saw as zero) keep support.
 inline constexpr double kOracleBsdfShare = 0.05;
 
-// The lobe cap the oracle's window is fitted to: 3 lobe half-widths of 2 alpha for GGX (the
-// wavelet policy's former cap, kept so the oracle's figures stay comparable across the variance
-// study's runs, docs/sampler-variance.md); the whole sphere for Lambert. Shared by both tracers.
-double oracleCapHalfAngle(bool lambert, float roughness);
+// The lobe cap the oracle's window is fitted to: the plugin's lobe-width trait (plugins/brdf.h),
+// so a new plugin brings its own. Shared by both tracers.
+double oracleCapHalfAngle(const plugins::Brdf& brdf, const plugins::BrdfParams& params);
 
 struct OracleOptions {
     int productLevel = 7;     // 128^2 over the window

@@ -20,12 +20,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr uint32_t kFlatMagic = 0x31545057; // "WPT1"
 
-// GGX lobe half-width in wi: D(h) halves at theta_h ~ 0.64 alpha and wi turns twice as fast as
-// h, so ~1.3 alpha; 2 alpha keeps the shoulder. The cap covers 4.5 half-widths: GGX's tail falls
-// only as theta^-4, and beyond 3 half-widths it still held ~10% of the lobe, which the defensive
-// techniques sampled poorly (courtyard r = 0.2: Var/I^2 0.51 with 3, 0.13 with 4.5; the product's
-// resolution lost by the wider window is won back by the lobe refinement below its leaves).
-constexpr double kLobeWidthPerAlpha = 2.0;
+// A glossy lobe's cap covers 4.5 of its half-widths (the plugin's lobe-width trait): GGX's tail
+// falls only as theta^-4, and beyond 3 half-widths it still held ~10% of the lobe, which the
+// defensive techniques sampled poorly (courtyard r = 0.2: Var/I^2 0.51 with 3, 0.13 with 4.5; the
+// product's resolution lost by the wider window is won back by the lobe refinement below its leaves).
 constexpr double kCapCoverage = 4.5;
 // Budgets (docs/sampler-variance.md): the env factor keeps 512 of a window's 1024 coefficients
 // (192 cost courtyard r = 0.2 2x in variance) and all of the whole sphere's (one table); the
@@ -63,8 +61,6 @@ double binRadius(const wavelet::OctahedralMap& map, int b, int x, int y, glm::dv
 
 } // namespace
 
-double ggxAlpha(float roughness) { return std::max(double(roughness) * roughness, 1e-4); }
-
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env) {
     ProductPolicy p;
@@ -74,9 +70,9 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.reason = "black environment: nothing to sample but the BSDF";
         return p;
     }
-    if (std::string(brdf.name()) == "lambert") {
+    if (brdf.lobeAxis() == plugins::BrdfLobeAxis::Normal) {
         p.aroundNormal = true;
-        p.lobeHalfWidth = 0.5 * kPi;
+        p.lobeHalfWidth = brdf.lobeWidth(params).halfWidth;
         p.capHalfAngle = kPi;
         p.binLevel = 0;
         p.productLevel = 5;
@@ -89,8 +85,7 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
                    "refined by the env pyramid";
         return p;
     }
-    const double alpha = ggxAlpha(params.roughness);
-    p.lobeHalfWidth = kLobeWidthPerAlpha * alpha;
+    p.lobeHalfWidth = brdf.lobeWidth(params).halfWidth;
     const double texel = envTexelAngle(env);
     p.capHalfAngle = kCapCoverage * p.lobeHalfWidth;
     if (p.lobeHalfWidth < kMinLobeInEnvTexels * texel) {

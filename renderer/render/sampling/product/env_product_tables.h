@@ -37,7 +37,7 @@ enum class ProductMode { Product, BsdfLobe };
 struct ProductPolicy {
     ProductMode mode = ProductMode::Product;
     std::string reason;
-    bool aroundNormal = false; // Lambert: axis = normal; GGX: axis = reflection vector
+    bool aroundNormal = false; // the plugin's lobe axis: the normal (diffuse) or the mirror direction
     double lobeHalfWidth = 0.0; // radians
     double capHalfAngle = 0.0;  // lobe cap around the axis (bin radius added per bin)
     int binLevel = 0;           // 2^b x 2^b octahedral bins of the axis
@@ -55,9 +55,6 @@ struct ProductPolicy {
 
 // How many env levels below the product's leaves over `window` the lobe refinement weights.
 int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int envLevel);
-
-// GGX alpha as the plugin computes it (alpha = max(r^2, 1e-4), docs/estimator.md).
-double ggxAlpha(float roughness);
 
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env);
