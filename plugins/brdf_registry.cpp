@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace wavelit::plugins {
 
@@ -15,10 +17,25 @@ const Brdf& lambertBrdf();
 const Brdf& ggxBrdf();
 
 namespace {
+
+// A plugin whose traits are incoherent (an unknown lobe axis, a width that is not a positive
+// angle) is a build defect no caller could work around: the registry refuses to start, naming
+// it, rather than let a sampler fall back to another plugin's policy.
+const std::array<const Brdf*, 2>& checked(const std::array<const Brdf*, 2>& all) {
+    for (const Brdf* b : all)
+        if (const std::string problem = brdfTraitsProblem(*b); !problem.empty()) {
+            std::fprintf(stderr, "wavelit: BRDF plugin registry: %s\n", problem.c_str());
+            std::abort();
+        }
+    return all;
+}
+
 const std::array<const Brdf*, 2>& registry() {
     static const std::array<const Brdf*, 2> kAll{&lambertBrdf(), &ggxBrdf()};
-    return kAll;
+    static const std::array<const Brdf*, 2>& kChecked = checked(kAll);
+    return kChecked;
 }
+
 } // namespace
 
 const Brdf* findBrdf(std::string_view name) {

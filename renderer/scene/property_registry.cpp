@@ -19,6 +19,17 @@ namespace {
 
 constexpr double kUnbounded = 1e30;
 
+// A parameter several plugins share reads differently in each (albedo, F0): its tooltip is each
+// declaring plugin's own, "name: tooltip", so no BRDF is named here.
+std::string pluginParameterTip(std::string_view parameter) {
+    std::string tip;
+    for (const plugins::Brdf* b : plugins::brdfRegistry())
+        for (const plugins::BrdfParameterInfo& info : b->parameters())
+            if (parameter == info.name)
+                tip += (tip.empty() ? "" : "; ") + std::string(b->name()) + ": " + info.tooltip;
+    return tip;
+}
+
 // A chainable declaration so each property reads as one statement.
 struct Decl {
     PropertyInfo& p;
@@ -99,10 +110,10 @@ std::vector<PropertyInfo> declareMaterial() {
         .options(brdfs).noun("BRDF").required().tip(brdfTip.c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "baseColor", "Base colour", PropertyType::Color, &Material::baseColor).range(0.0, 1.0)
-        .tip("Diffuse albedo (lambert) or normal-incidence reflectance F0 (ggx)")
+        .tip(pluginParameterTip("baseColor").c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "roughness", "Roughness", PropertyType::Float, &Material::roughness).range(0.0, 1.0)
-        .tip("Perceptual roughness r; GGX alpha = r^2").cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
+        .tip(pluginParameterTip("roughness").c_str()).cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "emission", "Emission", PropertyType::Color, &Material::emission).unit("W/(m^2 sr)")
         .range(0.0, kUnbounded).tip("Emitted radiance").cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     return l;

@@ -12,6 +12,7 @@
 // compact JSON, saving writes it back unchanged; empty when the file has none (docs/file-formats.md).
 #pragma once
 
+#include "plugins/brdf.h"
 #include "util/image.h"
 
 #include <glm/mat4x4.hpp>
@@ -49,12 +50,13 @@ struct TriangleMesh {
 };
 
 // A material: a BRDF plugin by name (plugins/) and its parameters. The name must be one of
-// plugins::brdfNames() (the registry's "brdf" property checks it; loading refuses any other).
-// Built-in plugins: "lambert" (baseColor), "ggx" (baseColor = F0 tint, roughness r, alpha = r^2).
+// plugins::brdfNames() (the registry's "brdf" property checks it; loading refuses any other);
+// each plugin says which parameters it reads (plugins::Brdf::parameters). A new material gets
+// the registry's default plugin (plugins::defaultBrdfName()).
 struct Material {
     EntityId id = kInvalidId;
     std::string name;
-    std::string brdf = "lambert";
+    std::string brdf = plugins::defaultBrdfName();
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};
     float roughness = 0.5f; // in [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
     glm::vec3 emission{0.0f}; // emitted radiance, W/(m^2 sr)

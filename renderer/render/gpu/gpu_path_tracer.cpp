@@ -1,5 +1,7 @@
 #include "render/gpu/gpu_path_tracer.h"
 
+#include "render/gpu/brdf_shader_source.h"
+
 #include "render/gpu/gpu_sampler_data.h"
 #include "render/gpu/gpu_scene_data.h"
 #include "render/session/integrator_factory.h"
@@ -244,7 +246,7 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         compile.defines.push_back("WAVELIT_ORACLE_SAMPLER=1");
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
-    auto spirv = vk::compileComputeShaderFile(shaderPath, compile);
+    auto spirv = compileFileWithBrdfDispatch(shaderPath, compile);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;

@@ -1,6 +1,7 @@
 #include "render/gpu/gpu_scene_data.h"
 
 #include "render/lights/light_sampler.h"
+#include "plugins/brdf.h"
 
 #include <glm/geometric.hpp>
 
@@ -22,23 +23,21 @@ void set4(float* dst, const glm::vec3& v, float w) {
 
 util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
     GpuMaterial g{};
-    uint32_t type;
-    if (m.brdf == "lambert") {
-        type = kGpuBrdfLambert;
-    } else if (m.brdf == "ggx") {
-        type = kGpuBrdfGgx;
-    } else {
+    const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
+    if (!brdf || !plugins::brdfGpuTwinProblem(*brdf).empty())
         return util::makeError(util::ErrorKind::Unsupported, "",
                                "material '" + m.name + "' uses BRDF '" + m.brdf +
                                    "', which has no GLSL twin",
                                "/materials/" + std::to_string(index) + "/brdf");
-    }
+    const uint32_t type = gpuBrdfType(*brdf);
     set4(g.baseColorRoughness, m.baseColor, m.roughness);
     set4(g.emissionType, m.emission, float(type));
     return g;
 }
 
 } // namespace
+
+uint32_t gpuBrdfType(const plugins::Brdf& brdf) { return uint32_t(plugins::brdfIndex(brdf)); }
 
 GpuLight packGpuLight(const scene::Light& light) {
     // The constants LightSampler uses on the CPU, so both tracers see the same values.

@@ -4,6 +4,7 @@
 // are.
 #pragma once
 
+#include "plugins/brdf.h"
 #include "render/session/render_options.h"
 #include "scene/bvh.h"
 #include "scene/scene.h"
@@ -21,9 +22,9 @@ inline constexpr uint32_t kGpuLightRect = 2;
 inline constexpr uint32_t kGpuLightSpot = 3;
 inline constexpr uint32_t kGpuLightSun = 4;
 
-// BRDF type codes shared with shaders/common/brdf.glsl.
-inline constexpr uint32_t kGpuBrdfLambert = 0;
-inline constexpr uint32_t kGpuBrdfGgx = 1;
+// A BRDF's type code in GpuMaterial::emissionType.w: its plugin registry index, which the
+// dispatch generated from the registry switches on (render/gpu/brdf_shader_source.h).
+uint32_t gpuBrdfType(const plugins::Brdf& brdf);
 
 // Mirrors `uniform Params` in path_tracer.comp (std140: all members vec4/uvec4).
 struct GpuParams {

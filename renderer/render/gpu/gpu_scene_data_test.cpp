@@ -28,10 +28,10 @@ TEST(GpuSceneData, PacksMaterialsWithTrailingDefault) {
     EXPECT_EQ(d->materials[0].baseColorRoughness[1], 0.5f);
     EXPECT_EQ(d->materials[0].baseColorRoughness[3], 0.3f);
     EXPECT_EQ(d->materials[0].emissionType[0], 2.0f);
-    EXPECT_EQ(d->materials[0].emissionType[3], float(kGpuBrdfGgx));
+    EXPECT_EQ(d->materials[0].emissionType[3], float(gpuBrdfType(*plugins::findBrdf("ggx"))));
     scene::Material fallback;
     EXPECT_EQ(d->materials[1].baseColorRoughness[0], fallback.baseColor.r);
-    EXPECT_EQ(d->materials[1].emissionType[3], float(kGpuBrdfLambert));
+    EXPECT_EQ(d->materials[1].emissionType[3], float(gpuBrdfType(*plugins::findBrdf("lambert"))));
     EXPECT_EQ(d->params.envSize[2], 2u);
     EXPECT_EQ(d->params.size[0], 40u);
     EXPECT_EQ(d->params.size[1], 20u);

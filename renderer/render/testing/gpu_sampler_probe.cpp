@@ -1,5 +1,6 @@
 #include "render/testing/gpu_sampler_probe.h"
 
+#include "render/gpu/brdf_shader_source.h"
 #include "render/gpu/gpu_path_tracer.h"
 #include "render/gpu/gpu_scene_data.h"
 #include "util/hemisphere_sampling.h"
@@ -211,12 +212,10 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
         if (p.material >= tables.materialCount())
             return util::makeError(util::ErrorKind::Invalid, "", "probe: material out of range");
         const SamplerMaterial& m = tables.material(p.material);
-        const std::string name = m.brdf->name();
-        if (name != "ggx" && name != "lambert")
-            return util::makeError(util::ErrorKind::Unsupported, "",
-                                   "probe: BRDF '" + name + "' has no GLSL twin");
+        if (const std::string problem = plugins::brdfGpuTwinProblem(*m.brdf); !problem.empty())
+            return util::makeError(util::ErrorKind::Unsupported, "", "probe: " + problem);
         scene.samplerIndexOfMaterial.push_back(int(p.material));
-        const float type = float(name == "ggx" ? kGpuBrdfGgx : kGpuBrdfLambert);
+        const float type = float(gpuBrdfType(*m.brdf));
         const float v[20] = {p.t.x,  p.t.y,  p.t.z,  0,    p.b.x,  p.b.y,  p.b.z,
                              0,      p.n.x,  p.n.y,  p.n.z, type, p.wo.x, p.wo.y,
                              p.wo.z, m.params.roughness, m.params.baseColor.x,
@@ -226,8 +225,8 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
     auto packed = packGpuSamplers(scene, kind, points.size());
     if (!packed)
         return packed.error();
-    auto spirv = vk::compileComputeShader(kernelSource(kind), "gpu_sampler_probe.comp",
-                                          {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
+    auto spirv = compileWithBrdfDispatch(kernelSource(kind), "gpu_sampler_probe.comp",
+                                         {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
     if (!spirv)
         return spirv.error();
     const size_t total = points.size() * size_t(drawsPerPoint);

@@ -1,0 +1,95 @@
+#include "render/gpu/brdf_shader_source.h"
+
+#include "plugins/brdf.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace wavelit::render {
+namespace {
+
+// One `if (type == i) return call;` line per plugin with a GLSL twin.
+std::string cases(const char* plugins::BrdfGpuTwin::*fn, const char* args) {
+    std::string out;
+    const auto all = plugins::brdfRegistry();
+    for (size_t i = 0; i < all.size(); ++i) {
+        if (!plugins::brdfGpuTwinProblem(*all[i]).empty())
+            continue;
+        out += "    if (type == " + std::to_string(i) + "u) return " + (all[i]->gpuTwin().*fn) +
+               "(" + args + ");\n";
+    }
+    return out;
+}
+
+bool startsWith(const std::string& line, const char* prefix) {
+    return line.rfind(prefix, 0) == 0;
+}
+
+} // namespace
+
+std::string brdfDispatchGlsl() {
+    std::string g = "// BRDF dispatch generated from the plugin registry "
+                    "(render/gpu/brdf_shader_source.cpp)\n"
+                    "#define WAVELIT_BRDF_DISPATCH 1\n";
+    for (const plugins::Brdf* b : plugins::brdfRegistry())
+        if (plugins::brdfGpuTwinProblem(*b).empty())
+            g += std::string("#include \"") + b->gpuTwin().snippet + "\"\n";
+    g += "bool brdfSample(uint type, vec3 baseColor, float roughness, vec3 wo, float u1, float u2,\n"
+         "                out vec3 wi, out vec3 f, out float pdf) {\n" +
+         cases(&plugins::BrdfGpuTwin::sampleFn, "baseColor, roughness, wo, u1, u2, wi, f, pdf") +
+         "    wi = vec3(0.0, 0.0, 1.0);\n    f = vec3(0.0);\n    pdf = 0.0;\n    return false;\n}\n"
+         "vec3 brdfEval(uint type, vec3 baseColor, float roughness, vec3 wo, vec3 wi) {\n" +
+         cases(&plugins::BrdfGpuTwin::evalFn, "baseColor, roughness, wo, wi") +
+         "    return vec3(0.0);\n}\n"
+         "float brdfPdf(uint type, float roughness, vec3 wo, vec3 wi) {\n" +
+         cases(&plugins::BrdfGpuTwin::pdfFn, "roughness, wo, wi") + "    return 0.0;\n}\n";
+    return g;
+}
+
+std::string spliceBrdfDispatch(const std::string& source) {
+    // A kernel that includes nothing cannot reach common/brdf.glsl; splicing would make it depend
+    // on the shader folder the twins include from.
+    if (source.find("#include") == std::string::npos)
+        return source;
+    // The splice goes after the last #extension of the leading directives (GLSL wants extensions
+    // before any declaration), or after #version when there is none.
+    std::istringstream in(source);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    size_t after = 0; // lines [0, after) precede the splice
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const std::string& l = lines[i];
+        if (startsWith(l, "#version") || startsWith(l, "#extension"))
+            after = i + 1;
+        else if (!(l.empty() || startsWith(l, "//")))
+            break;
+    }
+    std::string out;
+    for (size_t i = 0; i < after; ++i)
+        out += lines[i] + "\n";
+    out += "#extension GL_GOOGLE_include_directive : require\n" + brdfDispatchGlsl();
+    // GLSL >= 3.30: the line after `#line n` is line n.
+    out += "#line " + std::to_string(after + 1) + "\n";
+    for (size_t i = after; i < lines.size(); ++i)
+        out += lines[i] + "\n";
+    return out;
+}
+
+util::Result<std::vector<uint32_t>> compileWithBrdfDispatch(const std::string& source,
+                                                            const std::string& name,
+                                                            const vk::ShaderCompileOptions& options) {
+    return vk::compileComputeShader(spliceBrdfDispatch(source), name, options);
+}
+
+util::Result<std::vector<uint32_t>>
+compileFileWithBrdfDispatch(const std::string& path, const vk::ShaderCompileOptions& options) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        return util::makeError(util::ErrorKind::NotFound, path, "cannot read shader file");
+    std::ostringstream text;
+    text << file.rdbuf();
+    return compileWithBrdfDispatch(text.str(), path, options);
+}
+
+} // namespace wavelit::render
