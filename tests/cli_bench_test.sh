@@ -4,19 +4,12 @@
 # exit 2 on bad usage, 1 naming a missing scene or a reference of the wrong size. Tiny renders.
 # Usage: bash cli_bench_test.sh <wavelit-cli> <source-dir>
 set -u
-cli="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/cli_expect.sh"
 export WAVELIT_VK_VALIDATION=1
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # The ring under the soft studio setup: light-tailed enough that RMSE falls within a second.
 scene="$src/resources/scenes/ring_on_ground.wlscene"
 
-"$cli" bench "$scene" --samplers bsdf --time 1 --width 24 --height 24 --out "$tmp/b" >"$tmp/out" 2>"$tmp/err"
-rc=$?
-[ "$rc" -eq 0 ] || fail "bench exited $rc: $(cat "$tmp/err")"
+expect 0 -- bench "$scene" --samplers bsdf --time 1 --width 24 --height 24 --out "$tmp/b"
 for f in bench.json bench.csv bench.png bsdf.exr reference.exr; do
     [ -s "$tmp/b/$f" ] || fail "bench did not write $f"
 done
@@ -29,15 +22,13 @@ if [ -s "$tmp/b/bench.csv" ]; then
     "$cli" validate "$tmp/b/bsdf.exr" >/dev/null 2>&1 || fail "bsdf.exr does not validate"
 fi
 
-"$cli" bench "$scene" --time 0.1 >/dev/null 2>&1
-[ $? -eq 2 ] || fail "bench without --out should exit 2"
-"$cli" bench "$scene" --samplers bogus --out "$tmp/c" >/dev/null 2>&1
-[ $? -eq 2 ] || fail "unknown sampler should exit 2"
-"$cli" bench "$tmp/none.wlscene" --out "$tmp/d" >/dev/null 2>"$tmp/err"
-[ $? -eq 1 ] && grep -qF none.wlscene "$tmp/err" || fail "missing scene should exit 1 naming it"
-"$cli" bench "$scene" --reference "$tmp/b/bsdf.exr" --width 16 --height 16 --samplers bsdf --time 0.1 \
-    --out "$tmp/e" >/dev/null 2>"$tmp/err"
-[ $? -eq 1 ] && grep -qF "24x24" "$tmp/err" || fail "wrong-size reference should exit 1: $(cat "$tmp/err")"
+# Bad usage (no --out, an unknown sampler): exit 2; a missing scene and a reference of the wrong
+# size: exit 1 naming them.
+expect 2 -- bench "$scene" --time 0.1
+expect 2 -- bench "$scene" --samplers bogus --out "$tmp/c"
+expect 1 none.wlscene -- bench "$tmp/none.wlscene" --out "$tmp/d"
+expect 1 "24x24" -- bench "$scene" --reference "$tmp/b/bsdf.exr" --width 16 --height 16 --samplers bsdf \
+    --time 0.1 --out "$tmp/e"
 
 if [ "$failures" -eq 0 ]; then echo "cli_bench_test: all checks passed"; exit 0; fi
 echo "cli_bench_test: $failures failure(s)"; exit 1

@@ -4,26 +4,8 @@
 # or environment map. Renders are tiny (32x32, 2 spp) because lavapipe shares the CPU.
 # Usage: bash cli_render_test.sh <wavelit-cli> <source-dir>
 set -u
-cli="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/cli_expect.sh"
 export WAVELIT_VK_VALIDATION=1
-failures=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect CODE NEEDLE -- ARGS...: runs the CLI, checks the exit code and that stderr names NEEDLE.
-expect() {
-    local code="$1" needle="$2"
-    shift 3
-    "$cli" "$@" >"$tmp/out" 2>"$tmp/err"
-    local rc=$?
-    [ "$rc" -eq "$code" ] || fail "'$*' exited $rc, expected $code: $(cat "$tmp/err")"
-    if [ -n "$needle" ] && ! grep -qF -- "$needle" "$tmp/err"; then
-        fail "'$*' did not mention '$needle': $(cat "$tmp/err")"
-    fi
-}
 
 # A private copy of the default scene's tree, so files can be broken one at a time.
 copy_tree() {
@@ -38,21 +20,21 @@ scene="$tmp/good/scenes/ring_on_ground.wlscene"
 small=(--width 32 --height 32 --spp 2 --device vulkan)
 
 # Success: EXR, PNG and a report.
-expect 0 "" -- render "$scene" -o "$tmp/out.exr" "${small[@]}" --report "$tmp/report.json"
+expect 0 -- render "$scene" -o "$tmp/out.exr" "${small[@]}" --report "$tmp/report.json"
 [ -s "$tmp/out.exr" ] || fail "no EXR written"
 grep -qF "$tmp/out.exr" "$tmp/out" || fail "stdout does not say where the EXR went: $(cat "$tmp/out")"
 grep -q '"spp": 2' "$tmp/report.json" || fail "report lacks spp: $(cat "$tmp/report.json")"
 grep -q '"validationMessages": 0' "$tmp/report.json" || fail "validation messages: $(cat "$tmp/report.json")"
 grep -q '"pipelineSeconds"' "$tmp/report.json" || fail "report lacks timings"
-expect 0 "" -- render "$scene" -o "$tmp/out.png" "${small[@]}" --seed 5 --bounces 2
+expect 0 -- render "$scene" -o "$tmp/out.png" "${small[@]}" --seed 5 --bounces 2
 [ -s "$tmp/out.png" ] || fail "no PNG written"
 head -c 8 "$tmp/out.png" | od -An -tx1 | grep -q "89 50 4e 47" || fail "PNG signature missing"
-expect 0 "" -- render "$scene" -o "$tmp/timed.exr" --width 16 --height 16 --time 0.2
+expect 0 -- render "$scene" -o "$tmp/timed.exr" --width 16 --height 16 --time 0.2
 [ -s "$tmp/timed.exr" ] || fail "--time render wrote nothing"
 
 # Bad usage: exit 2.
 expect 2 "--bogus" -- render "$scene" -o "$tmp/x.exr" --bogus 1
-expect 2 "" -- render "$scene"
+expect 2 -- render "$scene"
 expect 2 ".jpg" -- render "$scene" -o "$tmp/x.jpg"
 expect 2 "--spp" -- render "$scene" -o "$tmp/x.exr" --spp zero
 expect 2 "--device" -- render "$scene" -o "$tmp/x.exr" --device gpu
@@ -60,14 +42,14 @@ expect 2 "--sampler" -- render "$scene" -o "$tmp/x.exr" --sampler nope
 
 # Every sampler renders on Vulkan, and the oracle on the CPU too.
 for sampler in uniform cosine bsdf env mis wavelet oracle; do
-    expect 0 "" -- render "$scene" -o "$tmp/s_$sampler.exr" "${small[@]}" --sampler "$sampler"
+    expect 0 -- render "$scene" -o "$tmp/s_$sampler.exr" "${small[@]}" --sampler "$sampler"
     [ -s "$tmp/s_$sampler.exr" ] || fail "--sampler $sampler on vulkan wrote nothing"
 done
-expect 0 "" -- render "$scene" -o "$tmp/s_oracle.exr" --width 4 --height 4 --spp 1 --sampler oracle --device cpu
+expect 0 -- render "$scene" -o "$tmp/s_oracle.exr" --width 4 --height 4 --spp 1 --sampler oracle --device cpu
 
 # The outlier tracer (issue 20): the N largest samples with their re-traced paths, on either device.
 for device in cpu vulkan; do
-    expect 0 "" -- render "$scene" -o "$tmp/o_$device.exr" --width 16 --height 16 --spp 4 --sampler mis \
+    expect 0 -- render "$scene" -o "$tmp/o_$device.exr" --width 16 --height 16 --spp 4 --sampler mis \
         --device "$device" --trace-outliers 3 --outliers "$tmp/o_$device.json"
     [ "$(grep -c '"rank":' "$tmp/o_$device.json")" -eq 3 ] || fail "--trace-outliers 3 on $device: $(head -c 400 "$tmp/o_$device.json")"
     grep -q '"vertices": \[' "$tmp/o_$device.json" || fail "outliers on $device lack their paths"
