@@ -274,56 +274,64 @@ bool traverse(const Bvh& bvh, const glm::vec3& o, const glm::vec3& d, float tMin
 
 } // namespace
 
+std::vector<ObjectTriangle> objectTriangles(const Scene& scene, size_t objIndex) {
+    std::vector<ObjectTriangle> out;
+    const Object& obj = scene.objects[objIndex];
+    if (!obj.mesh)
+        return out;
+    const TriangleMesh& mesh = *obj.mesh;
+    glm::mat4 m = obj.transform.matrix();
+    glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
+    // Objects without a known material get index materials.size(): the default material.
+    float material = float(scene.materials.size());
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].id == obj.materialId)
+            material = float(i);
+    bool hasNormals = mesh.normals.size() == mesh.positions.size();
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        uint32_t idx[3] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+        if (idx[0] >= mesh.positions.size() || idx[1] >= mesh.positions.size() ||
+            idx[2] >= mesh.positions.size())
+            continue;
+        glm::vec3 p[3], n[3];
+        for (int k = 0; k < 3; ++k)
+            p[k] = glm::vec3(m * glm::vec4(mesh.positions[idx[k]], 1.0f));
+        glm::vec3 ng = glm::cross(p[1] - p[0], p[2] - p[0]);
+        float len = glm::length(ng);
+        if (!(len > 0.0f) || !std::isfinite(len))
+            continue; // degenerate
+        ng /= len;
+        for (int k = 0; k < 3; ++k) {
+            n[k] = ng;
+            if (hasNormals) {
+                glm::vec3 sn = normalMatrix * mesh.normals[idx[k]];
+                float sl = glm::length(sn);
+                if (sl > 0.0f && std::isfinite(sl))
+                    n[k] = sn / sl;
+            }
+        }
+        BvhTriangle tri{};
+        setVec4(tri.v0, p[0], material);
+        setVec4(tri.v1, p[1], float(objIndex));
+        setVec4(tri.v2, p[2], 0.0f);
+        setVec4(tri.n0, n[0], 0.0f);
+        setVec4(tri.n1, n[1], 0.0f);
+        setVec4(tri.n2, n[2], 0.0f);
+        out.push_back({uint32_t(t), tri});
+    }
+    return out;
+}
+
 Bvh buildBvh(const Scene& scene) {
     util::Timer timer;
     Bvh bvh;
     std::vector<BvhTriangle> tris;
-    for (size_t objIndex = 0; objIndex < scene.objects.size(); ++objIndex) {
-        const Object& obj = scene.objects[objIndex];
-        if (!obj.mesh)
-            continue;
-        const TriangleMesh& mesh = *obj.mesh;
-        glm::mat4 m = obj.transform.matrix();
-        glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
-        // Objects without a known material get index materials.size(): the default material.
-        float material = float(scene.materials.size());
-        for (size_t i = 0; i < scene.materials.size(); ++i)
-            if (scene.materials[i].id == obj.materialId)
-                material = float(i);
-        bool hasNormals = mesh.normals.size() == mesh.positions.size();
-        for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-            uint32_t idx[3] = {mesh.indices[3 * t], mesh.indices[3 * t + 1],
-                               mesh.indices[3 * t + 2]};
-            if (idx[0] >= mesh.positions.size() || idx[1] >= mesh.positions.size() ||
-                idx[2] >= mesh.positions.size())
-                continue;
-            glm::vec3 p[3], n[3];
-            for (int k = 0; k < 3; ++k)
-                p[k] = glm::vec3(m * glm::vec4(mesh.positions[idx[k]], 1.0f));
-            glm::vec3 ng = glm::cross(p[1] - p[0], p[2] - p[0]);
-            float len = glm::length(ng);
-            if (!(len > 0.0f) || !std::isfinite(len))
-                continue; // degenerate
-            ng /= len;
-            for (int k = 0; k < 3; ++k) {
-                n[k] = ng;
-                if (hasNormals) {
-                    glm::vec3 sn = normalMatrix * mesh.normals[idx[k]];
-                    float sl = glm::length(sn);
-                    if (sl > 0.0f && std::isfinite(sl))
-                        n[k] = sn / sl;
-                }
-            }
-            BvhTriangle tri{};
-            setVec4(tri.v0, p[0], material);
-            setVec4(tri.v1, p[1], float(objIndex));
-            setVec4(tri.v2, p[2], 0.0f);
-            setVec4(tri.n0, n[0], 0.0f);
-            setVec4(tri.n1, n[1], 0.0f);
-            setVec4(tri.n2, n[2], 0.0f);
-            tris.push_back(tri);
+    std::vector<uint32_t> source;
+    for (size_t objIndex = 0; objIndex < scene.objects.size(); ++objIndex)
+        for (const ObjectTriangle& t : objectTriangles(scene, objIndex)) {
+            tris.push_back(t.triangle);
+            source.push_back(t.meshTriangle);
         }
-    }
 
     std::vector<BuildPrim> prims(tris.size());
     for (size_t i = 0; i < tris.size(); ++i) {
@@ -346,8 +354,11 @@ Bvh buildBvh(const Scene& scene) {
         Builder(prims, order, bvh.nodes).build(0, 0, uint32_t(tris.size()));
     }
     bvh.triangles.resize(tris.size());
-    for (size_t i = 0; i < order.size(); ++i)
+    bvh.meshTriangles.resize(tris.size());
+    for (size_t i = 0; i < order.size(); ++i) {
         bvh.triangles[i] = tris[order[i]];
+        bvh.meshTriangles[i] = source[order[i]];
+    }
     bvh.buildSeconds = timer.seconds();
     return bvh;
 }

@@ -40,8 +40,19 @@ static_assert(sizeof(BvhTriangle) == 96);
 struct Bvh {
     std::vector<BvhNode> nodes; // nodes[0] is the root
     std::vector<BvhTriangle> triangles;
+    // Per triangle: its index in its object's mesh (CPU only, not uploaded), so refitObjects can
+    // recompute an object's world-space triangles in place after a move.
+    std::vector<uint32_t> meshTriangles;
     double buildSeconds = 0.0;
 };
+
+// One object's non-degenerate world-space triangles in mesh order, as buildBvh makes them
+// (material index in v0.w, object index in v1.w), each with its index in the mesh.
+struct ObjectTriangle {
+    uint32_t meshTriangle;
+    BvhTriangle triangle;
+};
+std::vector<ObjectTriangle> objectTriangles(const Scene& scene, size_t objectIndex);
 
 struct BvhHit {
     float t = 0.0f;

@@ -67,7 +67,7 @@ uint64_t gpuPassSeed(uint64_t seed, int pass) {
 }
 
 util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::Bvh& bvh,
-                                        const RenderOptions& options) {
+                                        const RenderOptions& options, bool packEnvTexels) {
     GpuSceneData d;
     for (size_t i = 0; i <= scene.materials.size(); ++i) {
         auto m =
@@ -102,11 +102,13 @@ util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::
     if (env.image && !env.image->empty()) {
         p.envSize[0] = uint32_t(env.image->width);
         p.envSize[1] = uint32_t(env.image->height);
-        d.envTexels.reserve(env.image->pixels.size() * 3);
-        for (const glm::vec3& t : env.image->pixels) {
-            d.envTexels.push_back(t.r);
-            d.envTexels.push_back(t.g);
-            d.envTexels.push_back(t.b);
+        if (packEnvTexels) {
+            d.envTexels.reserve(env.image->pixels.size() * 3);
+            for (const glm::vec3& t : env.image->pixels) {
+                d.envTexels.push_back(t.r);
+                d.envTexels.push_back(t.g);
+                d.envTexels.push_back(t.b);
+            }
         }
     }
     p.envSize[2] = uint32_t(d.materials.size());

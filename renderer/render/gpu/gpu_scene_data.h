@@ -75,8 +75,10 @@ struct GpuSceneData {
 };
 
 // Errors: a material whose BRDF has no GLSL twin (Unsupported, naming the material).
+// packEnvTexels false: envTexels stays empty (an update that keeps the texels on the device);
+// params.envSize is filled either way.
 util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::Bvh& bvh,
-                                        const RenderOptions& options);
+                                        const RenderOptions& options, bool packEnvTexels = true);
 
 // Seed of pass `pass` (docs/estimator.md "Random numbers"): seed ^ (pass * 0x9E3779B97F4A7C15).
 uint64_t gpuPassSeed(uint64_t seed, int pass);

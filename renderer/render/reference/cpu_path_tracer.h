@@ -62,6 +62,13 @@ public:
     // invalidates, and restarts accumulation. Errors as create()'s; on error nothing changes.
     util::Status setScene(std::shared_ptr<const scene::Scene> scene,
                           std::shared_ptr<const scene::Bvh> bvh) override;
+    // As setScene, with the sampler tables rebuilt by the change set's invalidations (a light or
+    // camera edit builds none) instead of by comparing inputs.
+    util::Status applyChanges(std::shared_ptr<const scene::Scene> scene,
+                              std::shared_ptr<const scene::Bvh> bvh,
+                              const scene::ChangeSet& changes) override;
+    // Sampler-table builds of the last update (the CPU tracer uploads nothing).
+    UpdateCounts lastUpdate() const override { return m_lastUpdate; }
     std::shared_ptr<const DirectionSamplerTables> samplerTables() const override {
         return m_samplerTables;
     }
@@ -99,6 +106,10 @@ private:
     static void setSamplerIndices(std::vector<ResolvedMaterial>& materials,
                                   const std::vector<int>& samplerIndexOfMaterial);
     const ResolvedMaterial& material(float index) const;
+    // setScene and applyChanges (`changed`: the change set's invalidations, or nullptr).
+    util::Status swapScene(std::shared_ptr<const scene::Scene> scene,
+                           std::shared_ptr<const scene::Bvh> bvh,
+                           const std::vector<scene::Invalidation>* changed);
 
     // The direction-sampling step (local shading frame, solid-angle pdf). `ds` is the vertex's
     // DirectionSampler (nullptr for the `bsdf` kind: the plugin samples with u1, u2, u3 unused);
@@ -151,6 +162,7 @@ private:
     std::vector<glm::dvec3> m_sum;
     int m_passes = 0;
     IntegratorTimings m_timings;
+    UpdateCounts m_lastUpdate;
 };
 
 } // namespace wavelit::render

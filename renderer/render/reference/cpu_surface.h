@@ -15,6 +15,14 @@ struct SurfacePoint {
     float materialIndex;   // v0.w (index into Scene::materials; materials.size() = default)
 };
 
+// docs/estimator.md: power(a, b) = a > 0 ? 1 / (1 + (b/a)^2) : 0 (lights.glsl's twin): the MIS
+// weight of the CPU tracer's path and next-event terms.
+inline float powerWeight(float a, float b) {
+    if (!(a > 0.0f)) return 0.0f;
+    const float r = b / a;
+    return 1.0f / (1.0f + r * r);
+}
+
 SurfacePoint surfaceAt(const scene::Bvh& bvh, const scene::BvhHit& hit, const glm::vec3& origin,
                        const glm::vec3& dir);
 

@@ -1,5 +1,6 @@
 #include "render/sampling/sampler_tables_cache.h"
 
+#include <algorithm>
 #include <string>
 
 namespace wavelit::render {
@@ -19,6 +20,22 @@ bool samePieces(const DirectionSamplerTables& previous, const DirectionSamplerTa
             return false;
     }
     return true;
+}
+
+// Whether any of `changed` can alter a table: the environment, a material's BRDF, which
+// material an object uses, or which objects exist (materials in use).
+bool touchesTables(const std::vector<scene::Invalidation>& changed) {
+    using F = scene::FactorKind;
+    return std::any_of(changed.begin(), changed.end(), [](const scene::Invalidation& i) {
+        return i.factor == F::Environment || i.factor == F::MaterialBrdf ||
+               i.factor == F::ObjectMaterial || i.factor == F::ObjectGeometry;
+    });
+}
+
+bool touchesEnvironment(const std::vector<scene::Invalidation>& changed) {
+    return std::any_of(changed.begin(), changed.end(), [](const scene::Invalidation& i) {
+        return i.factor == scene::FactorKind::Environment;
+    });
 }
 
 } // namespace
@@ -55,8 +72,8 @@ util::Result<std::vector<SceneMaterial>> resolveSceneMaterials(const scene::Scen
     return out;
 }
 
-util::Result<SceneSamplerTables> SamplerTablesCache::update(const scene::Scene& scene,
-                                                            SamplerKind kind) {
+util::Result<SceneSamplerTables> SamplerTablesCache::update(
+    const scene::Scene& scene, SamplerKind kind, const std::vector<scene::Invalidation>* changed) {
     auto all = resolveSceneMaterials(scene);
     if (!all)
         return all.error();
@@ -73,8 +90,29 @@ util::Result<SceneSamplerTables> SamplerTablesCache::update(const scene::Scene& 
             out.samplerIndexOfMaterial[i] = int(materials.size());
             materials.push_back({m.name, (*all)[i].brdf, plugins::BrdfParams{m.baseColor, m.roughness}});
         }
-    auto tables = DirectionSamplerTables::build(scene.lighting.environment, std::move(materials),
-                                                kind, m_previous.get(), m_envOptions);
+    const bool sameKind = m_previous && m_previous->kind() == kind;
+    if (changed && sameKind && !touchesTables(*changed)) {
+        // A light, camera or display edit: the previous tables are right as they are.
+        ++m_rebuilds.environmentReuses;
+        for (size_t i = 0; i < m_previous->materialCount(); ++i)
+            if (m_previous->productTables(i))
+                ++m_rebuilds.materialReuses;
+        out.tables = m_previous;
+        return out;
+    }
+    // Keyed by the change set: an unchanged environment is the previous one (the reuse test then
+    // matches on the shared image pointer, with no texel comparison); a changed one is rebuilt,
+    // and with it every product table (they hold environment factors).
+    const DirectionSamplerTables* previous = m_previous.get();
+    const scene::Environment* env = &scene.lighting.environment;
+    if (changed && sameKind) {
+        if (touchesEnvironment(*changed))
+            previous = nullptr;
+        else
+            env = &m_previous->sourceEnvironment();
+    }
+    auto tables = DirectionSamplerTables::build(*env, std::move(materials), kind, previous,
+                                                m_envOptions);
 
     ++(tables->environmentReused() ? m_rebuilds.environmentReuses : m_rebuilds.environmentBuilds);
     for (size_t i = 0; i < tables->materialCount(); ++i)

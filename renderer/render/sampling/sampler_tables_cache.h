@@ -6,8 +6,11 @@
 //   material edit (BRDF, baseColor, roughness)           -> that material's product tables only
 //   object move / mesh change                            -> nothing here (the BVH is the caller's)
 //   material added but used by no object                 -> nothing: unused materials get no tables
-// Reuse is decided on the inputs (DirectionSamplerTables::build with a previous build), never on
-// the edit's name, so any way of producing the next scene (undo, reload, script) is handled alike.
+// With a change set's invalidations (update's `changed`), what to rebuild is read from them: no
+// Environment invalidation means the environment is the previous one (never compared texel by
+// texel), and invalidations that touch no table (lights, camera) hand back the previous tables
+// without building anything. Without them (a whole new scene: open, reload), reuse is decided on
+// the inputs (DirectionSamplerTables::build with a previous build).
 // One cache per integrator; the tables it returns are immutable and may outlive it.
 // Not thread-safe: driven by the thread that owns the integrator.
 #pragma once
@@ -16,6 +19,7 @@
 #include "render/sampling/direction_sampler.h"
 #include "render/session/render_options.h"
 #include "render/sampling/sampler_environment.h"
+#include "scene/property_registry.h"
 #include "scene/scene.h"
 #include "util/result.h"
 
@@ -68,7 +72,10 @@ public:
     // unknown BRDF (Unsupported, naming the material, where "/materials/i/brdf").
     // When nothing the tables hold changed (an object move, a light edit, a display edit), the
     // previous call's tables are returned: the same pointer means nothing to re-upload.
-    util::Result<SceneSamplerTables> update(const scene::Scene& scene, SamplerKind kind);
+    // `changed`: the invalidations of the change set that led from the previous call's scene to
+    // `scene` (ChangeSet::invalidations); nullptr: unknown, compare the inputs.
+    util::Result<SceneSamplerTables> update(const scene::Scene& scene, SamplerKind kind,
+                                            const std::vector<scene::Invalidation>* changed = nullptr);
 
     const SamplerTablesRebuilds& rebuilds() const { return m_rebuilds; }
 

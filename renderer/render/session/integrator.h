@@ -4,6 +4,8 @@
 #pragma once
 
 #include "render/sampling/sampler_tables_cache.h"
+#include "render/session/update_counts.h"
+#include "scene/change_set.h"
 #include "util/image.h"
 #include "util/result.h"
 
@@ -55,6 +57,18 @@ public:
                                   std::shared_ptr<const scene::Bvh> /*bvh*/) {
         return util::makeError(util::ErrorKind::Unsupported, "", "setScene not supported");
     }
+    // Takes the scene after `changes` (and its BVH: the previous pointer when no geometry
+    // changed) and updates only what the changes invalidate (architecture.md §5.B "What an edit
+    // rebuilds"), then restarts accumulation. `changes` must lead from the integrator's current
+    // scene to `scene`. Default: setScene (everything re-sent), always correct.
+    virtual util::Status applyChanges(std::shared_ptr<const scene::Scene> scene,
+                                      std::shared_ptr<const scene::Bvh> bvh,
+                                      const scene::ChangeSet& /*changes*/) {
+        return setScene(std::move(scene), std::move(bvh));
+    }
+    // Uploads (and sampler-table builds) of the last create/setScene/applyChanges; the BVH
+    // counts are the session's.
+    virtual UpdateCounts lastUpdate() const { return {}; }
     // The direction samplers' tables in use (render report, architecture.md §7): nullptr for `bsdf` and
     // for integrators that build none.
     virtual std::shared_ptr<const DirectionSamplerTables> samplerTables() const { return nullptr; }

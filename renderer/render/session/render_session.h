@@ -24,6 +24,10 @@ struct RenderStats {
     // reused since the integrator was created: the render report's "samplerTables".
     std::shared_ptr<const DirectionSamplerTables> samplerTables;
     SamplerTablesRebuilds samplerRebuilds;
+    // What the last create/setScene/applyChanges rebuilt and uploaded (describeUpdate), and the
+    // sums since the session was created.
+    UpdateCounts lastUpdate;
+    UpdateCounts totalUpdates;
 };
 
 class RenderSession {
@@ -51,13 +55,22 @@ public:
     // edit invalidates (the CPU tracer: env change -> env + product tables, material edit -> that
     // material's, object move -> none); otherwise the integrator is recreated.
     util::Status setScene(const scene::Scene& scene);
+    // Applies an edit: `scene` is the session's scene after `changes` (the editor's merged
+    // change set since the last update). The BVH is kept, refitted or rebuilt as the changes
+    // need (bvh_update.h) and the integrator updates only what they invalidate (a light drag:
+    // the light buffer only). An integrator that cannot update in place is recreated.
+    util::Status applyChanges(const scene::Scene& scene, const scene::ChangeSet& changes);
     void resetAccumulation();
 
 private:
     RenderSession(RenderOptions options);
     RenderOptions m_options;
+    // Counts the session's BVH work into `bvhCounts`, then records the integrator's uploads.
+    void recordUpdate(UpdateCounts bvhCounts);
     std::unique_ptr<scene::Scene> m_scene;
+    std::shared_ptr<const scene::Bvh> m_bvh;
     std::unique_ptr<Integrator> m_integrator;
+    UpdateCounts m_lastUpdate, m_totalUpdates;
     InterruptCheck m_interrupt;
     double m_elapsed = 0.0;
 };
