@@ -86,10 +86,10 @@ void MainWindow::wireDocument() {
                 m_render->render(std::move(scene), path);
             });
     connect(m_document, &SceneDocument::sceneEdited, this,
-            [this](std::shared_ptr<const scene::Scene> scene) {
+            [this](std::shared_ptr<const scene::Scene> scene, const scene::ChangeSet& changes) {
                 m_outline->setScene(*scene);
                 refreshProperties();
-                m_render->render(std::move(scene), m_document->path());
+                m_render->renderEdit(std::move(scene), m_document->path(), changes);
             });
     connect(m_document, &SceneDocument::displayChanged, this,
             [this](std::shared_ptr<const scene::Scene> scene) {

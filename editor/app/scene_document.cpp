@@ -204,7 +204,7 @@ void SceneDocument::commit(const PropertyEdit& edit) {
     if (applied->change == scene::ChangeKind::Display)
         emit displayChanged(m_scene);
     else
-        emit sceneEdited(m_scene);
+        emit sceneEdited(m_scene, applied->changes);
 }
 
 util::Status SceneDocument::setExposure(float ev) {

@@ -16,6 +16,7 @@
 
 #include "app/save_plan.h"
 #include "commands/property_edit.h"
+#include "scene/change_set.h"
 
 #include <QFutureWatcher>
 #include <QUndoStack>
@@ -71,8 +72,10 @@ signals:
     void openFailed(const QString& message);
     // The scene opened, but the loader repaired problems on the way (each line names one).
     void openRepaired(const QString& message);
-    // A Restart/Rebuild edit: the render thread needs the new scene.
-    void sceneEdited(std::shared_ptr<const wavelit::scene::Scene> scene);
+    // A Restart/Rebuild edit (or its undo): the render thread needs the new scene; `changes`
+    // leads from the previous scene to it (RenderController::renderEdit updates only that).
+    void sceneEdited(std::shared_ptr<const wavelit::scene::Scene> scene,
+                     const wavelit::scene::ChangeSet& changes);
     // A Display edit: re-tone-map only.
     void displayChanged(std::shared_ptr<const wavelit::scene::Scene> scene);
     void saved(const QString& path);

@@ -10,6 +10,12 @@ PropertyCommand::PropertyCommand(PropertyEdit edit, scene::PropertyValue previou
                                                           QString::fromStdString(m_edit.name)));
 }
 
+scene::ChangeSet PropertyCommand::changes() const {
+    scene::ChangeSet out;
+    out.add(scene::PropertyEdit{m_edit.entity, m_edit.name, m_previous, m_edit.value});
+    return out;
+}
+
 void PropertyCommand::redo() { m_commit(m_edit); }
 
 void PropertyCommand::undo() { m_commit({m_edit.entity, m_edit.name, m_previous}); }

@@ -1,6 +1,7 @@
 // PropertyCommand: one property edit on the undo stack. It holds the new and the previous value
-// and applies them through a callback (the document's commit), so commands know nothing of the
-// document or the render thread. Edits of one gesture (same property, same non-zero GestureId: a
+// (changes(): the step as a scene::ChangeSet, whose inverse undo applies) and applies them
+// through a callback (the document's commit, which hands the change set to the render thread),
+// so commands know nothing of the document or the render thread. Edits of one gesture (same property, same non-zero GestureId: a
 // slider drag, a spin-box scrub, a viewport drag) merge into one step; separate edits never do.
 // The command's text names the step for the Edit menu ("sun intensity" -> "Undo sun intensity").
 #pragma once
@@ -28,6 +29,8 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
     const PropertyEdit& edit() const { return m_edit; }
+    // The step as a change set (previous value -> value); undo applies changes().inverted().
+    scene::ChangeSet changes() const;
 
 private:
     PropertyEdit m_edit;

@@ -15,12 +15,14 @@ util::Result<AppliedEdit> applyEdit(const scene::Scene& scene, const PropertyEdi
         return util::makeError(util::ErrorKind::Invalid, "",
                                std::string(scene::entityKindName(edit.entity.kind)) +
                                    " has no property '" + edit.name + "'");
-    auto previous = scene::getProperty(scene, edit.entity, edit.name);
-    if (!previous) return previous.error();
-    auto edited = std::make_shared<scene::Scene>(scene);
-    if (auto status = scene::setProperty(*edited, edit.entity, edit.name, edit.value); !status)
+    scene::ChangeSet changes;
+    if (auto status = changes.setProperty(scene, edit.entity, edit.name, edit.value); !status)
         return status.error();
-    return AppliedEdit{std::move(edited), std::move(previous.value()), info->change};
+    auto edited = std::make_shared<scene::Scene>(scene);
+    if (auto status = changes.apply(*edited); !status)
+        return status.error();
+    scene::PropertyValue previous = std::get<scene::PropertyEdit>(changes.edits().front()).oldValue;
+    return AppliedEdit{std::move(edited), std::move(previous), info->change, std::move(changes)};
 }
 
 } // namespace wavelit::editor

@@ -1,11 +1,14 @@
-// PropertyEdit: one property change as a value (the unit the undo stack and the render queue will
-// carry, architecture.md §9 "Threads"). apply() checks the value against the registry and returns the edited
-// scene copy (meshes and images are shared, so a copy is cheap) plus what the edit costs: a
-// Display edit (exposure) only re-tone-maps, Restart/Rebuild edits go to the render thread.
+// PropertyEdit: one property change as the UI makes it (entity, property, new value, gesture).
+// applyEdit turns it into a scene::ChangeSet against the current scene (old and new value: the
+// unit the undo stack and the render thread carry, architecture.md §5.B, §9 "Threads"), applies
+// that to a scene copy (meshes and images are shared, so a copy is cheap) and says what the edit
+// costs: a Display edit (exposure) only re-tone-maps, Restart/Rebuild edits go to the render
+// thread with their change set, which updates only what it invalidates.
 #pragma once
 
 #include "panels/entity_ref.h"
 
+#include "scene/change_set.h"
 #include "util/result.h"
 
 #include <QMetaType>
@@ -33,6 +36,7 @@ struct AppliedEdit {
     std::shared_ptr<const scene::Scene> scene; // the scene after the edit
     scene::PropertyValue previous;             // for undo
     scene::ChangeKind change = scene::ChangeKind::Restart;
+    scene::ChangeSet changes; // the edit from the given scene to `scene`
 };
 
 util::Result<AppliedEdit> applyEdit(const scene::Scene& scene, const PropertyEdit& edit);

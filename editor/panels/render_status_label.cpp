@@ -10,6 +10,8 @@ RenderStatusLabel::RenderStatusLabel(QWidget* parent) : QLabel(parent) {
 QString RenderStatusLabel::format(const RenderFrame& frame) {
     QString text = tr("%1 spp · %2 s").arg(frame.samplesPerPixel).arg(frame.elapsedSeconds, 0, 'f', 1);
     if (!frame.deviceName.isEmpty()) text += QStringLiteral(" · ") + frame.deviceName;
+    // What the last edit cost (architecture.md §5.B): a light drag should read "uploaded: lights".
+    if (!frame.lastUpdate.isEmpty()) text += QStringLiteral(" — ") + frame.lastUpdate;
     return text;
 }
 

@@ -1,4 +1,5 @@
-// RenderStatusLabel: the status bar's permanent render readout, "12 spp · 3.4 s · llvmpipe".
+// RenderStatusLabel: the status bar's permanent render readout, "12 spp · 3.4 s · llvmpipe", then
+// what the last scene update rebuilt and uploaded ("— uploaded: lights", RenderFrame::lastUpdate).
 #pragma once
 
 #include "viewport/render_frame.h"

@@ -30,20 +30,34 @@ void RenderController::shutdown() {
 }
 
 void RenderController::render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath) {
-    if (m_shared->cancel.load()) return;
     RenderJob job;
+    job.scene = std::move(scene);
+    job.scenePath = scenePath.toStdString();
+    submit(std::move(job));
+}
+
+void RenderController::renderEdit(std::shared_ptr<const scene::Scene> scene, const QString& scenePath,
+                                  const scene::ChangeSet& changes) {
+    RenderJob job;
+    job.scene = std::move(scene);
+    job.scenePath = scenePath.toStdString();
+    job.changes = changes;
+    job.baseGeneration = m_generation; // the job whose scene `changes` starts from
+    submit(std::move(job));
+}
+
+void RenderController::submit(RenderJob job) {
+    if (m_shared->cancel.load()) return;
     job.generation = ++m_generation;
     job.maxSamplesPerPixel = m_settings.maxSamplesPerPixel;
-    if (scene) {
-        job.options.width = m_settings.width > 0 ? m_settings.width : scene->render.width;
-        job.options.height = m_settings.height > 0 ? m_settings.height : scene->render.height;
-        job.options.bounces = scene->render.bounces;
+    if (job.scene) {
+        job.options.width = m_settings.width > 0 ? m_settings.width : job.scene->render.width;
+        job.options.height = m_settings.height > 0 ? m_settings.height : job.scene->render.height;
+        job.options.bounces = job.scene->render.bounces;
     }
     job.options.device = m_settings.device;
     job.options.sampler = m_settings.sampler;
     job.options.validation = m_settings.validation;
-    job.scene = std::move(scene);
-    job.scenePath = scenePath.toStdString();
     m_latest = RenderFrame{};
     // Counted before it is queued: the running pass stops at its next piece to take it.
     m_shared->pendingRequests.fetch_add(1);

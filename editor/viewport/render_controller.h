@@ -11,6 +11,7 @@
 #include "viewport/render_frame.h"
 
 #include "render/session/render_options.h"
+#include "scene/change_set.h"
 
 #include <QObject>
 #include <QThread>
@@ -53,6 +54,12 @@ public:
     // Restarts rendering with this scene (a new generation). A null scene stops rendering.
     // scenePath: the file its relative asset paths start from.
     void render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath);
+    // Restarts rendering after an edit: `changes` leads from the scene of the previous render()
+    // or renderEdit() to `scene`. The render thread hands it (merged with edits it has not yet
+    // started) to the session, which rebuilds and re-uploads only what it invalidates; when its
+    // session does not hold the previous scene (a failure, other options) it swaps in the scene.
+    void renderEdit(std::shared_ptr<const scene::Scene> scene, const QString& scenePath,
+                    const scene::ChangeSet& changes);
     // Stops rendering at the next piece boundary of the running pass (~40 ms); no more frames are
     // delivered. Does not wait: shutdown() also joins.
     void cancel();
@@ -72,6 +79,7 @@ signals:
     void failed(const QString& message);
 
 private:
+    void submit(RenderJob job);
     void onFrame(RenderFrame frame);
     void onFailed(const QString& message, quint64 generation);
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/session/render_options.h"
+#include "scene/change_set.h"
 #include "scene/scene.h"
 #include "util/image.h"
 
@@ -12,6 +13,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace wavelit::editor {
@@ -26,6 +28,11 @@ struct RenderJob {
     render::RenderOptions options;
     int maxSamplesPerPixel = 0; // stop (idle) once reached; 0 = progressive forever
     quint64 generation = 0;
+    // An edit (RenderController::renderEdit): what changed since the scene of job
+    // `baseGeneration`; the worker applies it when its session holds that scene, else (or when
+    // empty) it swaps in the whole scene.
+    std::optional<scene::ChangeSet> changes;
+    quint64 baseGeneration = 0;
 };
 
 // A published frame: the mean linear radiance so far, its display form and the statistics that
@@ -39,6 +46,7 @@ struct RenderFrame {
     double elapsedSeconds = 0.0; // render time since the last restart
     QString deviceName;
     int validationMessages = 0; // Vulkan validation messages so far (tests require 0)
+    QString lastUpdate;         // what the last scene update rebuilt and uploaded (describeUpdate)
     quint64 generation = 0;
 };
 

@@ -34,6 +34,18 @@ RenderWorker::~RenderWorker() = default;
 
 void RenderWorker::submit(RenderJob job) {
     m_shared->pendingRequests.fetch_sub(1);
+    // Newest wins, but an edit replacing an edit not yet started carries both: the merged change
+    // set leads from the older one's base scene to the newest (newest value per property wins).
+    if (m_pending && job.changes) {
+        if (m_pending->changes && m_pending->scene) {
+            scene::ChangeSet merged = std::move(*m_pending->changes);
+            merged.merge(*job.changes);
+            job.changes = std::move(merged);
+            job.baseGeneration = m_pending->baseGeneration;
+        } else {
+            job.changes.reset(); // the pending job was a whole scene: so is this one
+        }
+    }
     m_pending = std::move(job);
     scheduleStep();
 }
@@ -100,6 +112,7 @@ bool RenderWorker::startPendingJob() {
     m_lastFrame = RenderFrame{};
     if (!job.scene) {
         m_session.reset();
+        m_sessionGeneration = 0;
         return false;
     }
     if (missingAssets(*job.scene)) {
@@ -111,10 +124,17 @@ bool RenderWorker::startPendingJob() {
         job.scene = std::move(completed);
     }
     if (m_session && sameSessionOptions(m_sessionOptions, job.options)) {
-        if (auto status = m_session->setScene(*job.scene); !status) {
+        // An edit of the scene the session holds updates only what it changed; anything else
+        // (a newly opened scene, a session that missed a job) swaps in the whole scene.
+        const bool incremental = job.changes && m_sessionGeneration != 0 &&
+                                 m_sessionGeneration == job.baseGeneration;
+        const util::Status status = incremental ? m_session->applyChanges(*job.scene, *job.changes)
+                                                : m_session->setScene(*job.scene);
+        if (!status) {
             fail(toQString(status.error()));
             return false;
         }
+        m_sessionGeneration = job.generation;
         return true;
     }
     m_session.reset(); // release the old device before creating the next one
@@ -126,6 +146,7 @@ bool RenderWorker::startPendingJob() {
     m_session = std::move(created.value());
     m_session->setInterruptCheck([this] { return interrupted(); });
     m_sessionOptions = job.options;
+    m_sessionGeneration = job.generation;
     return true;
 }
 
@@ -142,6 +163,7 @@ void RenderWorker::publish() {
     frame.elapsedSeconds = stats.elapsedSeconds;
     frame.deviceName = QString::fromStdString(stats.deviceName);
     frame.validationMessages = stats.validationMessages;
+    frame.lastUpdate = QString::fromStdString(render::describeUpdate(stats.lastUpdate));
     frame.generation = m_generation;
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
@@ -160,6 +182,7 @@ void RenderWorker::fail(const QString& message) {
     // A failed session is in an unknown state (device lost, bad scene): drop it; the next job
     // creates a fresh one.
     m_session.reset();
+    m_sessionGeneration = 0;
     m_lastFrame = RenderFrame{};
     emit failed(message, m_generation);
 }

@@ -10,6 +10,11 @@
 // request and resumes the same pass (nothing is lost). So a request waits at most one piece,
 // never a whole pass (up to half a minute at 1.6 MP with `wavelet` on lavapipe).
 //
+// Edits: a job carrying a change set (RenderController::renderEdit) is applied to the session
+// (RenderSession::applyChanges: only what it invalidates is rebuilt and uploaded) when the session
+// holds the scene the change set starts from; a newer edit replacing one not yet started merges
+// into it. Otherwise the whole scene is swapped in (setScene).
+//
 // Display: the worker tone-maps each published frame (tone_map.h) with RenderShared::exposureEv
 // into RenderFrame::display, so the UI thread only paints. retoneMap() re-publishes the latest
 // frame's samples with the current exposure (a Display edit: no restart, no lost samples).
@@ -76,6 +81,7 @@ private:
     std::optional<RenderJob> m_pending;
     std::unique_ptr<render::RenderSession> m_session;
     render::RenderOptions m_sessionOptions;
+    quint64 m_sessionGeneration = 0; // the job whose scene the session holds; 0: none
     quint64 m_generation = 0;
     int m_maxSpp = 0;
     int m_publishedSpp = -1;

@@ -127,6 +127,20 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
     return j.str();
 }
 
+// What the session's last scene update rebuilt and uploaded (architecture.md §5.B "What an edit
+// rebuilds"); for a render from a file that is the first upload of everything.
+std::string updateJson(const render::UpdateCounts& c) {
+    std::ostringstream j;
+    j << "{\"summary\": \"" << jsonEscape(render::describeUpdate(c)) << "\", \"bvhBuilds\": "
+      << c.bvhBuilds << ", \"bvhRefits\": " << c.bvhRefits
+      << ", \"samplerTableBuilds\": " << c.samplerTableBuilds << ", \"uploads\": {\"geometry\": "
+      << c.geometryUploads << ", \"lights\": " << c.lightUploads << ", \"materials\": "
+      << c.materialUploads << ", \"envTexels\": " << c.envTexelUploads
+      << ", \"samplerTables\": " << c.samplerTableUploads << ", \"params\": " << c.paramUploads
+      << "}}";
+    return j.str();
+}
+
 std::string reportJson(const std::string& scenePath, const std::string& output,
                        const render::RenderOptions& o, bool samplerFromFlag,
                        const render::RenderStats& s, const scene::Scene& scene,
@@ -155,6 +169,7 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
       << "    \"secondsPerPass\": " << perPass << ",\n"
       << "    \"totalSeconds\": " << totalSeconds << "\n"
       << "  },\n"
+      << "  \"lastUpdate\": " << updateJson(s.lastUpdate) << ",\n"
       << "  \"choices\": [\n"
       << "    {\"what\": \"sampler\", \"value\": \"" << render::samplerKindName(o.sampler)
       << "\", \"reason\": \""

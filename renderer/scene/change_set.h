@@ -42,6 +42,8 @@ public:
     void addObject(const Scene& scene, Object object);
     void addLight(const Scene& scene, Light light);
     util::Status removeEntity(const Scene& scene, EntityRef ref);
+    // Records an edit whose old and new values are already known (an undo command's step).
+    void add(Edit edit) { m_edits.push_back(std::move(edit)); }
 
     // Applies the edits in order. On failure the scene is left as it was.
     util::Status apply(Scene& scene) const;

@@ -41,7 +41,7 @@ std::string describeUpdate(const UpdateCounts& c) {
     if (!rebuilt.empty())
         out = "rebuilt: " + rebuilt;
     if (!uploaded.empty())
-        out += (out.empty() ? "" : " · ") + std::string("uploaded: ") + uploaded;
+        out += (out.empty() ? "" : "; ") + std::string("uploaded: ") + uploaded;
     return out;
 }
 

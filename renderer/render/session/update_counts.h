@@ -23,7 +23,7 @@ struct UpdateCounts {
     bool operator==(const UpdateCounts&) const = default;
 };
 
-// "bvh: refit 1 · uploaded: lights, params" — what the last update rebuilt and uploaded, in a
+// "rebuilt: bvh refit 1; uploaded: geometry" — what the last update rebuilt and uploaded, in a
 // line for the status label and the report; "nothing rebuilt or uploaded" when all are zero.
 std::string describeUpdate(const UpdateCounts& counts);
 
