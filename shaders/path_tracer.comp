@@ -3,7 +3,7 @@
 // loop with Russian roulette) so its mean image matches render/reference/cpu_path_tracer.cpp within noise.
 // Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
 // defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
-// common/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
+// sampling/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
 // is then what the light MIS weights use) or is the technique of the next-event estimation of
 // DIRECT environment light (env, mis, wavelet, oracle; issue 20), whose continuation is the BSDF
 // sample, MIS-weighted against it (docs/estimator.md "Direction samplers").
@@ -68,11 +68,11 @@ layout(std430, binding = 5) buffer Accumulation { vec4 accumulation[]; };
 layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
 
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-#include "common/sampler_structs.glsl"
+#include "sampling/sampler_structs.glsl"
 layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };
-#include "common/direction_sampler.glsl"
+#include "sampling/direction_sampler.glsl"
 #endif
 
 #include "common/rng.glsl"

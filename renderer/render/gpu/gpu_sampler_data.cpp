@@ -1,6 +1,7 @@
 #include "render/gpu/gpu_sampler_data.h"
 
 #include "render/sampling/oracle_sampler.h"
+#include "render/sampling/sampler_constants.h"
 
 #include <algorithm>
 #include <bit>
@@ -56,10 +57,7 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 continue; // kinds other than wavelet: the material needs nothing
             const ProductPolicy& policy = product->policy();
             GpuSamplerMaterial& g = d.materials[i];
-            // A larger defensive share than the CPU policy's 0.03: the product holds the env, not
-            // the analytic lights, so BSDF draws are what find an area light's glossy reflection
-            // (ring scene, equal time: RMSE 0.498 at 0.03 vs 0.227 at 0.1; docs/wavelet-sampler.md).
-            g.mixBsdf = float(std::max(policy.mixBsdf, kGpuMinBsdfShare));
+            g.mixBsdf = float(policy.mixBsdf); // the CPU's (sampler_constants.h)
             g.capHalfAngle = float(policy.capHalfAngle);
             g.aroundNormal = policy.aroundNormal ? 1u : 0u;
             g.refineMaxLevels = uint32_t(std::max(0, policy.refineMaxLevels));
@@ -85,11 +83,11 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 d.words.push_back(std::bit_cast<uint32_t>(s));
         }
         d.tailOffset = uint32_t(d.words.size());
-        const int side = 1 << kGpuTailLevel;
+        const int side = 1 << kTailLevel;
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x)
                 d.words.push_back(
-                    std::bit_cast<uint32_t>(float(env.cellAverage(kGpuTailLevel, x, y))));
+                    std::bit_cast<uint32_t>(float(env.cellAverage(kTailLevel, x, y))));
     }
     if (d.words.empty())
         d.words.push_back(0);

@@ -1,11 +1,12 @@
-// The direction samplers' tables as the Vulkan tracer reads them (shaders/common/
-// direction_sampler.glsl, env_table.glsl), packed on the CPU so the layout can be tested without a
-// device. Three buffers:
+// The direction samplers' tables as the Vulkan tracer reads them (shaders/sampling/), packed on
+// the CPU so the layout can be tested without a device. Three buffers:
 //   envNodes   the env's HierarchicalSampler float tables, as they are (16 bytes per node)
 //   materials  one GpuSamplerMaterial per GPU material (scene materials, then the default)
 //   words      every used material's flat product tables (MaterialProductTables::flatten(): header,
-//              node words, scaling floats, each at its own offset), then the env's 16 x 16 cell
-//              averages as float bits at tailOffset (the mixture's tail estimate; 8 x 8)
+//              node words, scaling floats, each at its own offset), then the env's cell averages
+//              at level kTailLevel (sampler_constants.h) as float bits at tailOffset (the
+//              mixture's tail estimate)
+// The constants below reach the shaders as #defines (sampler_shader_defines.h).
 #pragma once
 
 #include "render/session/render_options.h"
@@ -18,19 +19,16 @@
 
 namespace wavelit::render {
 
-// SamplerMaterial.mode codes shared with direction_sampler.glsl.
+// SamplerMaterial.mode codes.
 inline constexpr uint32_t kGpuSamplerBsdfOnly = 0;
 inline constexpr uint32_t kGpuSamplerProduct = 1;
 inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
 inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense product
-// The finest product level the shader forms per hit (2^4 x 2^4 leaves; finer table details are
-// not synthesised: the env's quadtree refines below the leaves) and the tail estimate's cells
-// (8 x 8 env averages). Both set the per-hit cost: ~4^m + 4^tail BRDF evaluations.
+// The finest product level the shader forms per hit: 2^4 x 2^4 leaves, where the CPU's product
+// (ProductPolicy::productLevel) has 2^5. The GPU keeps its pyramid in private memory and pays
+// ~4^m x 4 BRDF evaluations per hit, so finer table details are not synthesised there: the lobe
+// refinement and the env's quadtree refine below the leaves (docs/wavelet-sampler.md "Constants").
 inline constexpr int kGpuMaxProductLevel = 4;
-inline constexpr int kGpuTailLevel = 3;
-// The smallest defensive BSDF share of the GPU product mixture (the CPU's policy may go lower;
-// gpu_sampler_data.cpp says why).
-inline constexpr double kGpuMinBsdfShare = 0.1;
 
 // The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the
 // exact axis, like the CPU's (oracle_sampler.h), but at 2^5 x 2^5 leaves, each the mean of
@@ -41,7 +39,7 @@ inline constexpr double kGpuMinBsdfShare = 0.1;
 inline constexpr int kGpuOracleLevel = 5;
 inline constexpr uint32_t kGpuOracleRefineLevels = 2;
 
-// Mirrors `struct SamplerMaterial` in shaders/common/sampler_structs.glsl (std430).
+// Mirrors `struct SamplerMaterial` in shaders/sampling/sampler_structs.glsl (std430).
 struct GpuSamplerMaterial {
     uint32_t mode = kGpuSamplerBsdfOnly;
     uint32_t tableOffset = 0;   // word offset of the flat header

@@ -1,6 +1,7 @@
 #include "render/sampling/direction_sampler.h"
 
 #include "render/sampling/oracle_sampler.h"
+#include "render/sampling/sampler_constants.h"
 #include "util/hemisphere_sampling.h"
 
 #include <glm/geometric.hpp>
@@ -12,16 +13,6 @@
 
 namespace wavelit::render {
 namespace {
-
-// One-sample MIS of two techniques at 1/2 each (the `mis` kind).
-constexpr double kMisWeight = 0.5;
-// The env share of the product mixtures: never 0 (full support for bright tails the estimates
-// below miss) and never all (the lobe technique keeps most of its samples).
-// (0.05 before the lobe refinement: every defensive share c costs ~c in Var/I^2 where the lobe
-// technique is good, docs/sampler-variance.md.)
-constexpr double kMinEnvShare = 0.02, kMaxEnvShare = 0.8;
-constexpr int kLobeStrata = 4;
-constexpr int kTailLevel = 4; // 16^2 cells: the tail estimate costs 256 BRDF evaluations
 
 // Field-for-field equality of what SamplerEnvironment::build reads (and the path, which names
 // the content). Images: the same pointer, else the same size and texels (a scene copy usually
@@ -233,7 +224,8 @@ void DirectionSampler::addProduct(SamplerKind kind) {
     const double lobeMoment = m_product ? productLobeMoment() : bsdfLobeMoment();
     const double tailMoment = tailEnvMoment(axis, capAngle);
     const double a = std::sqrt(std::max(tailMoment, 0.0)), b = std::sqrt(std::max(lobeMoment, 0.0));
-    const double envShare = std::clamp(a / std::max(a + b, 1e-300), kMinEnvShare, kMaxEnvShare);
+    const double minEnvShare = kind == SamplerKind::Oracle ? kOracleMinEnvShare : kWaveletMinEnvShare;
+    const double envShare = std::clamp(a / std::max(a + b, 1e-300), minEnvShare, kMaxEnvShare);
     if (m_product)
         m_components = {{Technique::Product, 1.0 - envShare - bsdfShare},
                         {Technique::Bsdf, bsdfShare},

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "render/sampling/product/env_product_sampler.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_environment.h"
 #include "plugins/brdf.h"
 
@@ -28,7 +29,7 @@ double oracleCapHalfAngle(const plugins::Brdf& brdf, const plugins::BrdfParams& 
 
 struct OracleOptions {
     int productLevel = 7;     // 128^2 over the window
-    int depthBelowEnv = 6;    // windows may shrink until product texels are 2^-6 env texels
+    int depthBelowEnv = kOracleDepthBelowEnv; // windows shrink to product texels of 2^-6 env texels
 };
 
 // capHalfAngle: the lobe's cap around axisLocal (>= kWholeSphereCapAngle: the whole sphere).

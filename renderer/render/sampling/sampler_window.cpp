@@ -1,5 +1,6 @@
 #include "render/sampling/sampler_window.h"
 
+#include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_environment.h"
 
 #include <glm/geometric.hpp>
@@ -9,17 +10,6 @@
 #include <numbers>
 
 namespace wavelit::render {
-namespace {
-
-// Probing the cap's rim at this many azimuths (and a ring at half the angle) bounds its image;
-// the octahedral map is smooth away from its folds, so a 7.5-degree spacing misses at most a
-// sliver the defensive techniques cover anyway.
-constexpr int kRimProbes = 48;
-// An image wider than half the square has crossed a fold (or is a hemisphere): use everything.
-constexpr double kMaxCompactExtent = 0.5;
-
-} // namespace
-
 double ProductWindow::side() const { return std::ldexp(1.0, -k); }
 
 glm::dvec2 ProductWindow::origin() const {

@@ -3,6 +3,7 @@
 #include "render/gpu/brdf_shader_source.h"
 #include "render/gpu/gpu_path_tracer.h"
 #include "render/gpu/gpu_scene_data.h"
+#include "render/gpu/sampler_shader_defines.h"
 #include "util/hemisphere_sampling.h"
 #include "util/image.h"
 #include "vk/buffer.h"
@@ -34,7 +35,7 @@ std::string kernelSource(SamplerKind kind) {
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 )") + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
 layout(local_size_x = 64) in;
-#include "common/sampler_structs.glsl"
+#include "sampling/sampler_structs.glsl"
 layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 1) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 2) readonly buffer SamplerWords { uint samplerWords[]; };
@@ -42,7 +43,7 @@ layout(std430, binding = 3) readonly buffer In { vec4 inputs[]; };
 layout(std430, binding = 4) buffer Samples { vec4 samples[]; };
 layout(std430, binding = 5) buffer Info { float info[]; };
 layout(push_constant) uniform Push { uint drawsPerPoint, points, tailOffset, lit; float envMean, cosYaw, sinYaw; int envLevel; uint kind, seedLo, seedHi; } pc;
-#include "common/direction_sampler.glsl"
+#include "sampling/direction_sampler.glsl"
 #include "common/rng.glsl"
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -226,7 +227,7 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
     if (!packed)
         return packed.error();
     auto spirv = compileWithBrdfDispatch(kernelSource(kind), "gpu_sampler_probe.comp",
-                                         {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
+                                         {{gpuShaderDirectory(), gpuPluginDirectory()}, samplerShaderDefines()});
     if (!spirv)
         return spirv.error();
     const size_t total = points.size() * size_t(drawsPerPoint);

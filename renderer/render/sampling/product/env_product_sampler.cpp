@@ -1,5 +1,6 @@
 #include "render/sampling/product/env_product_sampler.h"
 
+#include "render/sampling/sampler_constants.h"
 #include "wavelet/haar.h"
 #include "wavelet/product.h"
 #include "wavelet/scaling_tree.h"
@@ -14,29 +15,20 @@ namespace {
 
 constexpr double kFourPi = 4.0 * std::numbers::pi;
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
-// Lobe refinement: each child keeps at least this fraction of the largest child's BRDF weight,
-// so a child whose centre sees f cos = 0 (the horizon crossing it) keeps product support.
-constexpr double kLobeFloor = 0.02;
 
-// Picks the first of two parts (masses a, b) with u, rescaling u into [0, 1).
-inline int pickPart(double a, double b, double& u, double& probability) {
+// One step of the refinement's descent, serving both the draw and the pdf: drawing, the part of
+// two (masses a, b) is chosen by u, which is rescaled into [0, 1); otherwise `part` (the one
+// holding the point) is taken. Either way `probability` gets the part's share.
+inline int takePart(bool drawing, double a, double b, int part, double& u, double& probability) {
     const double whole = a + b;
     const double p0 = whole > 0.0 ? a / whole : 0.5;
-    if (u < p0) {
-        u = std::min(u / p0, kOneMinusEpsilon);
-        probability *= p0;
-        return 0;
-    }
     const double p1 = 1.0 - p0;
-    u = std::min((u - p0) / p1, kOneMinusEpsilon);
-    probability *= p1;
-    return 1;
-}
-
-inline double partProbability(double a, double b, int part) {
-    const double whole = a + b;
-    const double p0 = whole > 0.0 ? a / whole : 0.5;
-    return part == 0 ? p0 : 1.0 - p0;
+    if (drawing) {
+        part = u < p0 ? 0 : 1;
+        u = std::min(part == 0 ? u / p0 : (u - p0) / p1, kOneMinusEpsilon);
+    }
+    probability *= part == 0 ? p0 : p1;
+    return part;
 }
 
 } // namespace
@@ -114,13 +106,15 @@ double EnvProductSampler::integralSolidAngle() const {
     return m_product.clampedIntegral() * kFourPi * m_window.side() * m_window.side();
 }
 
-wavelet::DirectionSample EnvProductSampler::sampleLocal(glm::dvec2 u) const {
-    double probability = 0.0;
-    wavelet::SquareCell leaf = m_product.sampleLeaf(u, probability);
+wavelet::SquareCell EnvProductSampler::descendBelowLeaf(wavelet::SquareCell leaf, bool drawing,
+                                                        glm::dvec2& u, glm::dvec2 p,
+                                                        double& probability) const {
     if (leaf.level == 0) {
-        // Constant product over the window: a uniformly chosen quarter, u rescaled.
+        // Constant product over the window: a uniformly chosen quarter (u rescaled), or the
+        // quarter holding p's window-local point (passed in `u` when not drawing).
         const int cx = u.x < 0.5 ? 0 : 1, cy = u.y < 0.5 ? 0 : 1;
-        u = glm::min(glm::dvec2(2.0 * u.x - cx, 2.0 * u.y - cy), glm::dvec2(kOneMinusEpsilon));
+        if (drawing)
+            u = glm::min(glm::dvec2(2.0 * u.x - cx, 2.0 * u.y - cy), glm::dvec2(kOneMinusEpsilon));
         probability *= 0.25;
         leaf = {1, cx, cy};
     }
@@ -129,10 +123,20 @@ wavelet::DirectionSample EnvProductSampler::sampleLocal(glm::dvec2 u) const {
     for (const int stop = refineStop(cell); cell.level < stop;) {
         double w[4];
         childWeights(cell, w);
-        const int cy = pickPart(w[0] + w[1], w[2] + w[3], u.y, probability);
-        const int cx = pickPart(w[2 * cy], w[2 * cy + 1], u.x, probability);
+        const double scale = std::ldexp(1.0, cell.level + 1);
+        const int py = std::clamp(int(p.y * scale) - 2 * cell.y, 0, 1);
+        const int px = std::clamp(int(p.x * scale) - 2 * cell.x, 0, 1);
+        const int cy = takePart(drawing, w[0] + w[1], w[2] + w[3], py, u.y, probability);
+        const int cx = takePart(drawing, w[2 * cy], w[2 * cy + 1], px, u.x, probability);
         cell = {cell.level + 1, 2 * cell.x + cx, 2 * cell.y + cy};
     }
+    return cell;
+}
+
+wavelet::DirectionSample EnvProductSampler::sampleLocal(glm::dvec2 u) const {
+    double probability = 0.0;
+    const wavelet::SquareCell leaf = m_product.sampleLeaf(u, probability);
+    const wavelet::SquareCell cell = descendBelowLeaf(leaf, true, u, {}, probability);
     const wavelet::SquareSample s = m_env->fine().sampleWithin(cell, u);
     return {m_env->map().toDirection(0, s.point), probability * s.pdf / kFourPi};
 }
@@ -146,21 +150,7 @@ double EnvProductSampler::pdfLocal(const glm::dvec3& local) const {
     wavelet::SquareCell leaf = m_product.leafAt(inWindow, probability);
     if (!(probability > 0.0))
         return 0.0;
-    if (leaf.level == 0) {
-        probability *= 0.25;
-        leaf = {1, inWindow.x < 0.5 ? 0 : 1, inWindow.y < 0.5 ? 0 : 1};
-    }
-    wavelet::SquareCell cell = globalLeaf(leaf);
-    for (const int stop = refineStop(cell); cell.level < stop;) {
-        double w[4];
-        childWeights(cell, w);
-        const double scale = std::ldexp(1.0, cell.level + 1);
-        const int cx = std::clamp(int(p.x * scale) - 2 * cell.x, 0, 1);
-        const int cy = std::clamp(int(p.y * scale) - 2 * cell.y, 0, 1);
-        probability *= partProbability(w[0] + w[1], w[2] + w[3], cy) *
-                       partProbability(w[2 * cy], w[2 * cy + 1], cx);
-        cell = {cell.level + 1, 2 * cell.x + cx, 2 * cell.y + cy};
-    }
+    const wavelet::SquareCell cell = descendBelowLeaf(leaf, false, inWindow, p, probability);
     return probability * m_env->fine().pdfWithin(cell, p) / kFourPi;
 }
 

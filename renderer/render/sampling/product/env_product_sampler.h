@@ -69,6 +69,12 @@ private:
     // The lobe-refinement weights of the four children (x-major) of global cell `cell`.
     void childWeights(wavelet::SquareCell cell, double w[4]) const;
     int refineStop(const wavelet::SquareCell& cell) const;
+    // Below a product leaf: the root's quarters, then the lobe refinement, to the cell the env's
+    // quadtree takes over. ONE walk for sample and pdf: drawing, each choice is made by u (and u
+    // rescaled); otherwise the child holding square point p is followed (u then holds p's
+    // window-local point, for the root's quarters). Multiplies `probability` by the choices'.
+    wavelet::SquareCell descendBelowLeaf(wavelet::SquareCell leaf, bool drawing, glm::dvec2& u,
+                                         glm::dvec2 p, double& probability) const;
 
     const SamplerEnvironment* m_env;
     ProductWindow m_window;

@@ -1,6 +1,8 @@
 #include "render/sampling/product/env_product_tables.h"
 
 #include "render/sampling/product/env_product_sampler.h"
+#include "render/sampling/product/flat_product_layout.h"
+#include "render/sampling/sampler_constants.h"
 #include "util/timer.h"
 #include "wavelet/haar.h"
 
@@ -33,8 +35,9 @@ constexpr size_t kEnvKeepWindow = 512;
 constexpr size_t kEnvKeepWhole = 1024;
 constexpr size_t kBrdfKeep = 1024;
 // Defensive BSDF share: with the product covering the lobe (and its tail), what the defensive
-// parts take is mostly lost (Var >= 1/c_product - 1 for a perfect product).
-constexpr double kMixBsdf = 0.03;
+// parts take is mostly lost (Var >= 1/c_product - 1 for a perfect product); both tracers use
+// sampler_constants.h's, which says why it is not smaller.
+constexpr double kMixBsdf = kWaveletBsdfShare;
 // Lobe refinement below the product's leaves: BRDF-weighted env levels until a cell is narrower
 // than this fraction of the lobe half-width, at most kRefineMaxLevels (4 BRDF evaluations each).
 constexpr double kRefineCellPerLobe = 0.1;
@@ -185,21 +188,36 @@ std::string MaterialProductTables::describe() const {
 
 FlatProductTables MaterialProductTables::flatten() const {
     FlatProductTables f;
-    f.header = {kFlatMagic, uint32_t(m_policy.binLevel), uint32_t(m_policy.productLevel),
-                uint32_t(binCount()), uint32_t(factorCount())};
-    for (size_t i = 0; i < m_windows.size(); ++i)
-        f.header.insert(f.header.end(), {uint32_t(m_windows[i].k), uint32_t(m_windows[i].ox),
-                                         uint32_t(m_windows[i].oy), uint32_t(m_factorOf[i])});
-    for (const wavelet::SparseHaar& factor : m_factors) {
-        f.header.push_back(uint32_t(f.nodeWords.size() / kFlatNodeWords));
-        f.header.push_back(uint32_t(factor.nodes.size()));
+    namespace fl = flat_layout;
+    f.header.assign(size_t(fl::factorWordsAt(binCount(), int(factorCount()))), 0u);
+    f.header[fl::kMagic] = kFlatMagic;
+    f.header[fl::kBinLevel] = uint32_t(m_policy.binLevel);
+    f.header[fl::kProductLevel] = uint32_t(m_policy.productLevel);
+    f.header[fl::kBinCount] = uint32_t(binCount());
+    f.header[fl::kFactorCount] = uint32_t(factorCount());
+    for (size_t i = 0; i < m_windows.size(); ++i) {
+        uint32_t* bin = &f.header[size_t(fl::binWordsAt(int(i)))];
+        bin[fl::kBinK] = uint32_t(m_windows[i].k);
+        bin[fl::kBinOx] = uint32_t(m_windows[i].ox);
+        bin[fl::kBinOy] = uint32_t(m_windows[i].oy);
+        bin[fl::kBinFactor] = uint32_t(m_factorOf[i]);
+    }
+    for (size_t i = 0; i < m_factors.size(); ++i) {
+        const wavelet::SparseHaar& factor = m_factors[i];
+        uint32_t* words = &f.header[size_t(fl::factorWordsAt(binCount(), int(i)))];
+        words[fl::kFactorFirstNode] = uint32_t(f.nodeWords.size() / fl::kNodeWords);
+        words[fl::kFactorNodeCount] = uint32_t(factor.nodes.size());
         f.scaling.push_back(float(factor.scaling));
         for (const wavelet::SparseNode& n : factor.nodes) {
-            f.nodeWords.insert(f.nodeWords.end(), {uint32_t(n.level), uint32_t(n.x), uint32_t(n.y)});
-            for (double d : n.detail)
-                f.nodeWords.push_back(std::bit_cast<uint32_t>(float(d)));
-            for (int32_t c : n.child)
-                f.nodeWords.push_back(std::bit_cast<uint32_t>(c));
+            uint32_t node[fl::kNodeWords];
+            node[fl::kNodeLevel] = uint32_t(n.level);
+            node[fl::kNodeX] = uint32_t(n.x);
+            node[fl::kNodeY] = uint32_t(n.y);
+            for (int d = 0; d < 3; ++d)
+                node[fl::kNodeDetail + d] = std::bit_cast<uint32_t>(float(n.detail[size_t(d)]));
+            for (int c = 0; c < 4; ++c)
+                node[fl::kNodeChild + c] = std::bit_cast<uint32_t>(int32_t(n.child[size_t(c)]));
+            f.nodeWords.insert(f.nodeWords.end(), node, node + fl::kNodeWords);
         }
     }
     return f;
@@ -208,32 +226,36 @@ FlatProductTables MaterialProductTables::flatten() const {
 size_t MaterialProductTables::bytes() const {
     if (m_policy.mode != ProductMode::Product)
         return 0;
-    // flatten()'s sizes, counted without building the copy: header (5 words, 4 per bin, 2 per
-    // factor), kFlatNodeWords per node, one scaling float per factor.
+    // flatten()'s sizes, counted without building the copy: the header (flat_product_layout.h),
+    // kNodeWords per node, one scaling float per factor.
     size_t nodes = 0;
     for (const wavelet::SparseHaar& factor : m_factors)
         nodes += factor.nodes.size();
-    const size_t words = 5 + 4 * m_windows.size() + 3 * m_factors.size() + kFlatNodeWords * nodes;
+    const size_t words =
+        size_t(flat_layout::factorWordsAt(int(m_windows.size()), int(m_factors.size()))) +
+        m_factors.size() + size_t(flat_layout::kNodeWords) * nodes;
     return 4 * words;
 }
 
 wavelet::SparseHaar unflattenFactor(const FlatProductTables& flat, int factor, int level) {
-    const size_t bins = flat.header[3];
-    const size_t at = 5 + 4 * bins + 2 * size_t(factor);
-    const size_t first = flat.header[at], count = flat.header[at + 1];
+    namespace fl = flat_layout;
+    const size_t at =
+        size_t(fl::factorWordsAt(int(flat.header[size_t(fl::kBinCount)]), factor));
+    const size_t first = flat.header[at + fl::kFactorFirstNode];
+    const size_t count = flat.header[at + fl::kFactorNodeCount];
     wavelet::SparseHaar h;
     h.level = level;
     h.scaling = flat.scaling[size_t(factor)];
     for (size_t i = 0; i < count; ++i) {
-        const uint32_t* w = &flat.nodeWords[(first + i) * kFlatNodeWords];
+        const uint32_t* w = &flat.nodeWords[(first + i) * fl::kNodeWords];
         wavelet::SparseNode n;
-        n.level = int16_t(w[0]);
-        n.x = int32_t(w[1]);
-        n.y = int32_t(w[2]);
+        n.level = int16_t(w[fl::kNodeLevel]);
+        n.x = int32_t(w[fl::kNodeX]);
+        n.y = int32_t(w[fl::kNodeY]);
         for (int d = 0; d < 3; ++d)
-            n.detail[d] = std::bit_cast<float>(w[3 + d]);
+            n.detail[d] = std::bit_cast<float>(w[fl::kNodeDetail + d]);
         for (int c = 0; c < 4; ++c)
-            n.child[c] = std::bit_cast<int32_t>(w[6 + c]);
+            n.child[c] = std::bit_cast<int32_t>(w[fl::kNodeChild + c]);
         h.nodes.push_back(n);
     }
     return h;

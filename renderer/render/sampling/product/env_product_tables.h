@@ -19,6 +19,7 @@
 #pragma once
 
 #include "plugins/brdf.h"
+#include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_environment.h"
 #include "render/sampling/sampler_window.h"
 #include "wavelet/sparse_haar.h"
@@ -59,8 +60,9 @@ int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, i
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env);
 
-// Flat export for the GPU (docs/wavelet-sampler.md): header words, then per factor its nodes.
-inline constexpr int kFlatNodeWords = 10; // level, x, y, 3 float details, 4 int32 children
+// Flat export for the GPU (docs/wavelet-sampler.md; word layout: flat_product_layout.h): header
+// words, then per factor its nodes.
+inline constexpr int kFlatNodeWords = flat_layout::kNodeWords;
 struct FlatProductTables {
     std::vector<uint32_t> header;
     std::vector<uint32_t> nodeWords; // kFlatNodeWords words per SparseNode (see the doc)

@@ -1,0 +1,52 @@
+// The direction samplers' constants that BOTH tracers use (issue 11: one source). The C++ samplers
+// read them here; the Vulkan tracer's shaders get them as #defines generated from these values at
+// pipeline creation (render/gpu/sampler_shader_defines.h), so GLSL holds no copy of any of them.
+// Changing one here changes both tracers (docs/wavelet-sampler.md "Constants").
+#pragma once
+
+namespace wavelit::render {
+
+// `mis`: one-sample MIS of bsdf and env at 1/2 each (the balance heuristic in that model).
+inline constexpr double kMisWeight = 0.5;
+
+// The env share of the product mixtures (`wavelet`, `oracle`) is chosen per shading point from
+// the tail's second moment against the lobe's, c_env ~ sqrt(M_tail) / (sqrt(M_tail) +
+// sqrt(M_lobe)), clamped to [min, kMaxEnvShare]: never 0 (bright tails the estimate misses keep
+// support) and never all (the lobe technique keeps most samples). Every defensive share c costs
+// ~c in Var/I^2 where the lobe technique is good, hence small minimums.
+// `wavelet`: 0.05. Its product is truncated (K coefficients; on the GPU synthesised at 16^2), so
+// bright env it misses is covered only by env sampling: at 0.02 the GPU's glossy-sphere scene had
+// 18x the per-sample MSE (fireflies). The CPU used 0.02 until issue 11 (docs/wavelet-sampler.md).
+inline constexpr double kWaveletMinEnvShare = 0.05;
+// `oracle`: a dense product that misses nothing inside its window; 0.02 keeps it near the ideal.
+inline constexpr double kOracleMinEnvShare = 0.02;
+inline constexpr double kMaxEnvShare = 0.8;
+
+// The `wavelet` mixture's defensive BSDF share (ProductPolicy::mixBsdf). The product holds the
+// env, not the analytic lights, so BSDF draws are what find an area light's glossy reflection:
+// ring scene at equal time, RMSE 0.498 at 0.03 vs 0.227 at 0.1 (docs/wavelet-sampler.md).
+inline constexpr double kWaveletBsdfShare = 0.1;
+// (The `oracle`'s, kOracleBsdfShare, is in oracle_sampler.h; both tracers read it there.)
+
+// The share rule's moment estimates: the lobe's without a product from kLobeStrata^2 stratified
+// BSDF draws; the tail's on the env's 2^kTailLevel square cells (64 BRDF evaluations; 16^2 changed
+// no share in the variance study and costs 4x).
+inline constexpr int kLobeStrata = 4;
+inline constexpr int kTailLevel = 3;
+
+// Lobe refinement below a product's leaves (env_product_sampler.h): each child keeps at least this
+// fraction of the largest child's BRDF weight, so a child whose centre sees f cos = 0 (the
+// horizon crossing it) keeps product support.
+inline constexpr double kLobeFloor = 0.02;
+
+// The oracle's window may shrink until its product texels are 2^-this env texels.
+inline constexpr int kOracleDepthBelowEnv = 6;
+
+// chooseWindow (sampler_window.h): the cap's rim is probed at this many azimuths (and on a ring at
+// half the angle); the octahedral map is smooth away from its folds, so a 7.5-degree spacing
+// misses at most a sliver the defensive techniques cover anyway. An image wider than
+// kMaxCompactExtent of the square has crossed a fold (or is a hemisphere): the whole square.
+inline constexpr int kRimProbes = 48;
+inline constexpr double kMaxCompactExtent = 0.5;
+
+} // namespace wavelit::render

@@ -1,0 +1,251 @@
+// Direction samplers of the Vulkan tracer (issue 6; render/sampling/direction_sampler.h is the CPU
+// side, docs/wavelet-sampler.md the tables). Every kind returns the exact solid-angle pdf of the
+// mixture it draws from, and the tracer divides by it (architecture.md §4: never the paper's eq 7).
+//
+//   uniform, cosine, bsdf   hemisphere / plugin sampling, as on the CPU
+//   env                     the environment's quadtree (sampler_environment.glsl)
+//   mis                     bsdf WAVELIT_MIS_WEIGHT + env the rest
+//   wavelet                 per hit: the env factor of the reflection direction's bin times
+//                           BRDF x cos, dense in private memory, refined below its leaves
+//                           (product/env_product_sampler.glsl); mixed with bsdf (the policy's
+//                           share) and env by the CPU's share rule and constants.
+//                           Lobes the env cannot resolve (policy BsdfLobe): bsdf + env.
+//   oracle                  per hit: a dense product over a window fitted to the lobe around the
+//                           exact axis (oracle_sampler.glsl), mixed as the CPU's oracle. Compiled
+//                           with WAVELIT_ORACLE_SAMPLER (its private pyramid is 4x the wavelet's).
+//
+// The including shader includes sampling/sampler_structs.glsl and declares, before this file:
+//   buffer { EnvNode envNodes[]; };  buffer { SamplerMaterial samplerMaterials[]; };
+//   buffer { uint samplerWords[]; };
+// samplerWords holds each material's flat product tables (MaterialProductTables::flatten(), its
+// three arrays at the three offsets) and the env's tail cell averages (float bits).
+//
+// Tabulated draws keep their double square point: the pdfs of BOTH tabulated techniques are
+// evaluated at that point, never at the float direction re-mapped to the square, which can land
+// in the neighbouring texel (a sun's texel is 1e6 x denser than the sky beside it).
+#ifndef WAVELIT_DIRECTION_SAMPLER_GLSL
+#define WAVELIT_DIRECTION_SAMPLER_GLSL
+
+#include "common/brdf.glsl"
+#include "common/constants.glsl"
+#include "common/octahedral.glsl"
+#include "common/sampling.glsl"
+#include "sampling/sampler_environment.glsl"
+#include "sampling/product/env_product_sampler.glsl"
+#include "sampling/oracle_sampler.glsl"
+
+// Codes of render::SamplerKind (render_options.h) and of SamplerMaterial.mode (gpu_sampler_data.h).
+const uint kSamplerUniform = WAVELIT_SAMPLER_UNIFORM;
+const uint kSamplerCosine = WAVELIT_SAMPLER_COSINE;
+const uint kSamplerBsdf = WAVELIT_SAMPLER_BSDF;
+const uint kSamplerEnv = WAVELIT_SAMPLER_ENV;
+const uint kSamplerMis = WAVELIT_SAMPLER_MIS;
+const uint kSamplerWavelet = WAVELIT_SAMPLER_WAVELET;
+const uint kSamplerOracle = WAVELIT_SAMPLER_ORACLE;
+const uint kModeBsdfOnly = WAVELIT_MODE_BSDF_ONLY;
+const uint kModeProduct = WAVELIT_MODE_PRODUCT;
+const uint kModeBsdfLobe = WAVELIT_MODE_BSDF_LOBE;
+const uint kModeOracle = WAVELIT_MODE_ORACLE;
+
+float luminanceOf(vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+float dsBrdfCos(DirSampler s, vec3 wiWorld) {
+    vec3 l = frameToLocal(s.frame, wiWorld);
+    if (l.z <= 0.0) return 0.0;
+    return luminanceOf(brdfEval(s.brdfType, s.baseColor, s.roughness, s.wo, l) * l.z);
+}
+
+// --- the mixture shares (DirectionSampler::addProduct) ----------------------------------------
+
+// Second moment of env sampling over the coarse tail cells outside the lobe's domain (the window
+// when there is a product, else the cap widened by a cell).
+double dsTailMoment(DirSampler s, SamplerGlobals g, bool product, vec3 axisLocal, float capAngle) {
+    const int side = 1 << WAVELIT_TAIL_LEVEL;
+    float cellAngle = sqrt(kFourPi) / float(side);
+    float cosCap = cos(min(capAngle + cellAngle, kPi));
+    double windowScale = double(1 << s.k);
+    dvec2 origin = dvec2(s.ox, s.oy) * (0.5LF / windowScale);
+    double sum = 0.0LF;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            vec2 p = (vec2(x, y) + 0.5) / float(side);
+            if (product) {
+                dvec2 local = (dvec2(p) - origin) * windowScale;
+                if (local.x >= 0.0LF && local.x < 1.0LF && local.y >= 0.0LF && local.y < 1.0LF) continue;
+            }
+            vec3 d = octToDirection(p);
+            if (!product && dot(d, axisLocal) > cosCap) continue;
+            float fcos = dsBrdfCos(s, envToWorld(s.cosSinYaw, d));
+            double average = uintBitsToFloat(samplerWords[g.tailOffset + uint(y * side + x)]);
+            sum += average * double(fcos) * double(fcos);
+        }
+    double dw = double(kFourPi) / double(side * side);
+    return sum * double(g.envMean) * double(kFourPi) * dw;
+}
+
+// Stratified BSDF draws with the env's texel averages: the mean of (g / p)^2.
+double dsBsdfLobeMoment(DirSampler s, SamplerGlobals g) {
+    const int strata = WAVELIT_LOBE_STRATA;
+    double sum = 0.0LF;
+    for (int j = 0; j < strata; ++j)
+        for (int i = 0; i < strata; ++i) {
+            vec3 wi, f;
+            float pdf;
+            if (!brdfSample(s.brdfType, s.baseColor, s.roughness, s.wo, (float(i) + 0.5) / strata,
+                            (float(j) + 0.5) / strata, wi, f, pdf) ||
+                !(pdf > 0.0))
+                continue;
+            dvec2 p = dvec2(octToSquare(envToLocal(s.cosSinYaw, frameToWorld(s.frame, wi))));
+            double texel = envPdfWithin(0, 0, 0, p) * double(g.envMean);
+            double v = double(luminanceOf(f)) * double(wi.z) / double(pdf) * texel;
+            sum += v * v;
+        }
+    return sum / double(strata * strata);
+}
+
+// --- set-up, sampling, pdf ------------------------------------------------------------------
+
+// The wavelet's product for a hit: the window and env factor of the axis's bin.
+float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int envLevel) {
+    uint factor;
+    flatBinOf(sm, axisLocal, s.k, s.ox, s.oy, factor);
+    s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
+    s.refineLevels = dsRefineLevels(sm, s.k + s.m, envLevel);
+    return dsBuildProduct(s, sm, factor);
+}
+
+DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
+                   vec3 baseColor, float roughness) {
+    DirSampler s;
+    s.cProduct = 0.0;
+    s.cBsdf = 0.0;
+    s.cEnv = 0.0;
+    s.cUniform = 0.0;
+    s.cCosine = 0.0;
+    s.k = 0;
+    s.ox = 0;
+    s.oy = 0;
+    s.m = 0;
+    s.refineLevels = 0;
+    s.frame = frame;
+    s.wo = wo;
+    s.brdfType = brdfType;
+    s.baseColor = baseColor;
+    s.roughness = roughness;
+    s.cosSinYaw = g.cosSinYaw;
+    if (g.kind == kSamplerUniform) {
+        s.cUniform = 1.0;
+        return s;
+    }
+    if (g.kind == kSamplerCosine) {
+        s.cCosine = 1.0;
+        return s;
+    }
+    if (!g.lit || g.kind == kSamplerBsdf) {
+        s.cBsdf = 1.0;
+        return s;
+    }
+    if (g.kind == kSamplerEnv) {
+        s.cEnv = 1.0;
+        return s;
+    }
+    if (g.kind == kSamplerMis) {
+        s.cBsdf = float(WAVELIT_MIS_WEIGHT);
+        s.cEnv = float(1.0LF - WAVELIT_MIS_WEIGHT);
+        return s;
+    }
+    // wavelet, oracle
+    if (sm.mode == kModeBsdfOnly) {
+        s.cBsdf = 1.0;
+        return s;
+    }
+    vec3 nWorld = frame.n, woWorld = frameToWorld(frame, wo);
+    vec3 axisWorld = sm.aroundNormal != 0u ? nWorld : 2.0 * dot(woWorld, nWorld) * nWorld - woWorld;
+    vec3 axisLocal = normalize(envToLocal(g.cosSinYaw, axisWorld));
+    bool product = false;
+    double lobeMoment = 0.0LF;
+    float total = 0.0;
+    if (sm.mode == kModeProduct) total = dsSetupWavelet(s, sm, axisLocal, g.envLevel);
+    else if (sm.mode == kModeOracle) total = dsSetupOracle(s, sm, axisLocal, g.envLevel, g.envMean);
+    if (sm.mode == kModeProduct || sm.mode == kModeOracle) {
+        product = total > 0.0;
+        if (product) {
+            // The product's integral over the window's solid angle: its second moment is close
+            // to that integral squared (the product is close to the lobe's integrand).
+            double windowArea = 1.0LF / double(1 << (2 * s.k));
+            double lobe = double(total) / double(1 << (2 * s.m)) * double(kFourPi) * windowArea;
+            lobeMoment = lobe * lobe;
+        }
+    }
+    if (!product) lobeMoment = dsBsdfLobeMoment(s, g);
+    double tail = dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
+    double a = sqrt(max(tail, 0.0LF)), bm = sqrt(max(lobeMoment, 0.0LF));
+    double minEnvShare = sm.mode == kModeOracle ? WAVELIT_ORACLE_MIN_ENV_SHARE : WAVELIT_WAVELET_MIN_ENV_SHARE;
+    double envShare = clamp(a / max(a + bm, 1e-300LF), minEnvShare, WAVELIT_MAX_ENV_SHARE);
+    if (product) {
+        s.cProduct = float(1.0LF - envShare - double(sm.mixBsdf));
+        s.cBsdf = sm.mixBsdf;
+        s.cEnv = float(envShare);
+    } else {
+        s.cBsdf = float(1.0LF - envShare);
+        s.cEnv = float(envShare);
+    }
+    return s;
+}
+
+// The mixture's solid-angle pdf at world direction wi whose octahedral point (env-local) is p.
+float dsMixturePdf(DirSampler s, vec3 wi, dvec2 p) {
+    vec3 local = frameToLocal(s.frame, wi);
+    double pdf = 0.0LF;
+    if (s.cUniform > 0.0) pdf += double(s.cUniform) * (local.z > 0.0 ? double(0.5 * kInvPi) : 0.0LF);
+    if (s.cCosine > 0.0) pdf += double(s.cCosine) * double(cosineHemispherePdf(local));
+    if (s.cBsdf > 0.0) pdf += double(s.cBsdf) * double(brdfPdf(s.brdfType, s.roughness, s.wo, local));
+    if (s.cEnv > 0.0) pdf += double(s.cEnv) * envPdfWithin(0, 0, 0, p) / double(kFourPi);
+    if (s.cProduct > 0.0) pdf += double(s.cProduct) * dsProductPdf(s, p) / double(kFourPi);
+    return float(pdf);
+}
+
+float dsPdf(DirSampler s, vec3 wi) {
+    return dsMixturePdf(s, wi, dvec2(octToSquare(envToLocal(s.cosSinYaw, wi))));
+}
+
+// u3 picks the technique (in the CPU's order: product, bsdf, env), u1 and u2 drive it.
+bool dsSample(DirSampler s, float u1, float u2, float u3, out vec3 wi, out float pdf) {
+    wi = vec3(0.0);
+    pdf = 0.0;
+    if (s.cUniform > 0.0) {
+        float z = u1, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * u2;
+        wi = normalize(frameToWorld(s.frame, vec3(r * cos(phi), r * sin(phi), z)));
+        pdf = dsPdf(s, wi);
+        return pdf > 0.0;
+    }
+    if (s.cCosine > 0.0) {
+        wi = normalize(frameToWorld(s.frame, sampleCosineHemisphere(vec2(u1, u2))));
+        pdf = dsPdf(s, wi);
+        return pdf > 0.0;
+    }
+    bool tabulated = false;
+    dvec2 p = dvec2(0.0LF);
+    double density;
+    if (s.cProduct > 0.0 && u3 < s.cProduct) {
+        p = dsSampleProduct(s, dvec2(u1, u2), density);
+        tabulated = true;
+    } else if (s.cEnv > 0.0 && (s.cBsdf == 0.0 || u3 >= s.cProduct + s.cBsdf)) {
+        p = envSampleWithin(0, 0, 0, dvec2(u1, u2), density);
+        tabulated = true;
+    }
+    if (tabulated) {
+        wi = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
+        pdf = dsMixturePdf(s, wi, p);
+    } else {
+        vec3 local, f;
+        float bsdfPdf;
+        if (!brdfSample(s.brdfType, s.baseColor, s.roughness, s.wo, u1, u2, local, f, bsdfPdf))
+            return false;
+        wi = normalize(frameToWorld(s.frame, local));
+        pdf = dsPdf(s, wi);
+    }
+    return pdf > 0.0 && !isinf(pdf) && !isnan(wi.x);
+}
+
+#endif

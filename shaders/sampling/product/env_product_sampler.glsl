@@ -1,0 +1,219 @@
+// One hit's product distribution env x (BRDF x cos) over a window, refined below its leaves
+// (render/sampling/product/env_product_sampler.h is the CPU side). The GPU forms the product
+// DENSE in private memory (architecture.md §4, the dense path): the bin's env factor (a truncated
+// Haar image, env_product_tables.glsl) is synthesised to its 2^m x 2^m scaling coefficients,
+// m <= WAVELIT_MAX_PRODUCT_LEVEL (2^4: the per-hit cost is ~4^m BRDF evaluations, and below the
+// leaves the env's quadtree refines anyway), each leaf's average times BRDF x cos env-weighted
+// over its 2 x 2 sub-cells; sampling descends that pyramid, the lobe refinement, then the env's
+// quadtree, and the pdf re-walks the same descent (dsDescendProduct).
+#ifndef WAVELIT_ENV_PRODUCT_SAMPLER_GLSL
+#define WAVELIT_ENV_PRODUCT_SAMPLER_GLSL
+
+#include "common/constants.glsl"
+#include "common/octahedral.glsl"
+#include "sampling/sampler_environment.glsl"
+#include "sampling/product/env_product_tables.glsl"
+
+const float kFourPi = 4.0 * kPi;
+
+// The product pyramid of one hit: masses of levels 0..m at offsets (4^l - 1) / 3, and while it is
+// decoded, the env factor's node of each cell of levels 0..m-1. The oracle's (oracle_sampler.glsl)
+// is finer, WAVELIT_ORACLE_LEVEL; only its pipeline defines WAVELIT_ORACLE_SAMPLER.
+int pyramidOffset(int l) { return ((1 << (2 * l)) - 1) / 3; }
+#ifdef WAVELIT_ORACLE_SAMPLER
+const int kPyramidLevel = WAVELIT_ORACLE_LEVEL;
+#else
+const int kPyramidLevel = WAVELIT_MAX_PRODUCT_LEVEL;
+#endif
+float gMass[((1 << (2 * (kPyramidLevel + 1))) - 1) / 3];
+int gNode[((1 << (2 * WAVELIT_MAX_PRODUCT_LEVEL)) - 1) / 3];
+
+// Sums the leaves (level m) of gMass up to its root; returns the total.
+float dsSumPyramid(int m) {
+    for (int l = m - 1; l >= 0; --l) {
+        int sideL = 1 << l, offL = pyramidOffset(l), offC = pyramidOffset(l + 1);
+        for (int y = 0; y < sideL; ++y)
+            for (int x = 0; x < sideL; ++x) {
+                int c0 = offC + 2 * y * (2 * sideL) + 2 * x, c1 = c0 + 2 * sideL;
+                gMass[offL + y * sideL + x] = gMass[c0] + gMass[c0 + 1] + gMass[c1] + gMass[c1 + 1];
+            }
+    }
+    return gMass[0];
+}
+
+// BRDF x cos at the centres of the four sub-cells of global cell (l, x, y), weighted by the env's
+// luminance there: sum_s L_s f(c_s) / sum_s L_s (the plain mean where the env is black). Times
+// the env's average over the cell this is the mean of L f over the sub-cells, so a sun in the
+// steep flank of a lobe gets the BRDF where it sits, not at the cell's centre (the CPU's
+// windowTabulateEnvWeighted). `sub`: the env's shares in the sub-cells (envSubCellMasses).
+float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
+    double side = 1.0LF / double(1 << (l + 1));
+    double weighted = 0.0LF, weight = 0.0LF, plain = 0.0LF;
+    for (int c = 0; c < 4; ++c) {
+        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
+        double f = double(dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre)))));
+        weighted += sub[c] * f;
+        weight += sub[c];
+        plain += f;
+    }
+    return float(weight > 0.0LF ? weighted / weight : 0.25LF * plain);
+}
+
+// Decodes the env factor `factor` (truncated Haar, SparseHaar's tree) to scaling coefficients at
+// level m (haar.h's synthesis), multiplies each cell's average by the env-weighted BRDF x cos over
+// its sub-cells, and sums the masses up. Returns the total mass (0: nothing to sample).
+float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
+    uint firstNode, nodeCount;
+    flatFactorNodes(sm, factor, firstNode, nodeCount);
+    int m = s.m;
+    gMass[0] = flatScaling(sm, factor);
+    gNode[0] = nodeCount > 0u ? 0 : -1;
+    for (int l = 0; l < m; ++l) {
+        int side = 1 << l, off = pyramidOffset(l), offChild = pyramidOffset(l + 1);
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                float sc = gMass[off + y * side + x];
+                int node = gNode[off + y * side + x];
+                vec3 d = vec3(0.0);
+                uint base = 0u;
+                if (node >= 0) {
+                    base = flatNodeBase(sm, firstNode, node);
+                    d = flatNodeDetails(base);
+                }
+                float child[4] = float[4](0.5 * (sc + d.x + d.y + d.z), 0.5 * (sc - d.x + d.y - d.z),
+                                          0.5 * (sc + d.x - d.y - d.z), 0.5 * (sc - d.x - d.y + d.z));
+                for (int c = 0; c < 4; ++c) {
+                    int i = offChild + (2 * y + (c >> 1)) * (2 * side) + 2 * x + (c & 1);
+                    gMass[i] = child[c];
+                    if (l + 1 < m) gNode[i] = node >= 0 ? flatNodeChild(base, c) : -1;
+                }
+            }
+    }
+    // Leaves: average env luminance (2^m x the scaling coefficient), clamped at 0 (truncation
+    // leaves negatives), times BRDF x cos env-weighted over the leaf's four sub-cells.
+    int side = 1 << m, off = pyramidOffset(m);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            float e = max(0.0, gMass[off + y * side + x] * float(side));
+            int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
+            double sub[4];
+            if (e > 0.0) envSubCellMasses(s.k + m, gx, gy, sub);
+            gMass[off + y * side + x] = e > 0.0 ? e * dsEnvWeightedBrdfCos(s, s.k + m, gx, gy, sub) : 0.0;
+        }
+    return dsSumPyramid(m);
+}
+
+// Each of two parts' own share of their sum (1/2 each when both are empty).
+void dsParts(double a, double b, out double p0, out double p1) {
+    double whole = a + b;
+    p0 = whole > 0.0LF ? a / whole : 0.5LF;
+    p1 = whole > 0.0LF ? b / whole : 0.5LF;
+}
+
+// Probabilities of the rows below pyramid cell (l, x, y) and of the columns given each row: in
+// double from the float masses, each half its own share (1 - p would lose a sun's 1e-6).
+void dsChildProbabilities(int l, int x, int y, out double pRow[2], out double pColumn[4]) {
+    int side = 1 << (l + 1), off = pyramidOffset(l + 1);
+    int c0 = off + 2 * y * side + 2 * x, c1 = c0 + side;
+    double a = gMass[c0], b = gMass[c0 + 1], c = gMass[c1], d = gMass[c1 + 1];
+    dsParts(a + b, c + d, pRow[0], pRow[1]);
+    dsParts(a, b, pColumn[0], pColumn[1]);
+    dsParts(c, d, pColumn[2], pColumn[3]);
+}
+
+// Lobe refinement below the product's leaves (EnvProductSampler's): the four children of a cell
+// are weighted by the env's own split of the cell (its quadtree's conditional probabilities)
+// times BRDF x cos at the child's centre, plus WAVELIT_LOBE_FLOOR of the largest so no child with
+// env light loses support. The weights depend only on the cell, so the pdf's walk is exact.
+void dsRefineWeights(DirSampler s, int l, int x, int y, out double w[4]) {
+    int reached;
+    int node = envFindNode(l, x, y, reached);
+    w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
+    if (reached == l) envChildShares(node, w);
+    double side = 1.0LF / double(1 << (l + 1));
+    float h[4];
+    float hmax = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
+        h[c] = dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre))));
+        hmax = max(hmax, h[c]);
+    }
+    if (hmax > 0.0 && !isinf(hmax))
+        for (int c = 0; c < 4; ++c) w[c] *= double(h[c] + WAVELIT_LOBE_FLOOR * hmax);
+}
+
+// lobeRefineLevels (env_product_tables.h): levels below leaf level `leafLevel` until a cell is
+// narrower than the material's refineCellAngle, at most refineMaxLevels, never below the env.
+int dsRefineLevels(SamplerMaterial sm, int leafLevel, int envLevel) {
+    if (!(sm.refineCellAngle > 0.0)) return 0;
+    float cell = sqrt(kFourPi) / float(1 << leafLevel);
+    int levels = 0;
+    while (levels < int(sm.refineMaxLevels) && leafLevel + levels < envLevel &&
+           cell > sm.refineCellAngle) {
+        cell *= 0.5;
+        ++levels;
+    }
+    return levels;
+}
+
+// The product technique's one descent, serving both the draw and the pdf (takeShare): the
+// product's pyramid to a leaf, the lobe refinement, then the env's quadtree, drawing by u or
+// following square point p (which must lie in the window). Returns the probability of the cell
+// reached, left in (l, x, y) (global).
+double dsDescendProduct(DirSampler s, bool drawing, inout dvec2 u, dvec2 p, out int l, out int x,
+                        out int y) {
+    int shift = s.m - 1;
+    // The leaf holding p, window-local (only read when following p).
+    double scale = double(1 << (s.k + s.m));
+    int lx = int(p.x * scale) - (s.ox << shift), ly = int(p.y * scale) - (s.oy << shift);
+    double probability = 1.0LF;
+    x = 0;
+    y = 0;
+    for (int level = 0; level < s.m; ++level) {
+        double pRow[2], pColumn[4];
+        dsChildProbabilities(level, x, y, pRow, pColumn);
+        int bit = s.m - 1 - level;
+        int cy = takeShare(drawing, pRow[0], pRow[1], (ly >> bit) & 1, u.y, probability);
+        int cx = takeShare(drawing, pColumn[2 * cy], pColumn[2 * cy + 1], (lx >> bit) & 1, u.x,
+                           probability);
+        x = 2 * x + cx;
+        y = 2 * y + cy;
+    }
+    l = s.k + s.m;
+    x += s.ox << shift;
+    y += s.oy << shift;
+    if (!drawing && !(probability > 0.0LF)) return 0.0LF; // p is where nothing is drawn
+    for (int r = 0; r < s.refineLevels; ++r) {
+        double w[4], p0, p1;
+        dsRefineWeights(s, l, x, y, w);
+        dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
+        int cy = takeShare(drawing, p0, p1, childHolding(p.y, l, y), u.y, probability);
+        dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
+        int cx = takeShare(drawing, p0, p1, childHolding(p.x, l, x), u.x, probability);
+        l += 1;
+        x = 2 * x + cx;
+        y = 2 * y + cy;
+    }
+    if (!drawing && !(probability > 0.0LF)) return 0.0LF;
+    return probability * envDescend(drawing, u, p, l, x, y);
+}
+
+// A point of the octahedral square from the product; `density` per unit square area.
+dvec2 dsSampleProduct(DirSampler s, dvec2 u, out double density) {
+    int l, x, y;
+    density = dsDescendProduct(s, true, u, dvec2(0.0LF), l, x, y) * powerOfFour(l);
+    return (dvec2(x, y) + u) / double(1 << l);
+}
+
+// The product technique's density at square point p (0 outside its window).
+double dsProductPdf(DirSampler s, dvec2 p) {
+    int shift = s.m - 1, side = 1 << s.m;
+    double scale = double(1 << (s.k + s.m));
+    int lx = int(p.x * scale) - (s.ox << shift), ly = int(p.y * scale) - (s.oy << shift);
+    if (lx < 0 || ly < 0 || lx >= side || ly >= side) return 0.0LF;
+    dvec2 u = dvec2(0.0LF);
+    int l, x, y;
+    return dsDescendProduct(s, false, u, p, l, x, y) * powerOfFour(l);
+}
+
+#endif
