@@ -1,6 +1,9 @@
 // The Vulkan compute path tracer behind createGpuPathTracer (integrator_factory.h). Each pass of
 // shaders/path_tracer.comp adds 1 spp to a float-sum storage buffer; image() reads it back and
-// divides by the pass count. Scene data is uploaded at creation and re-uploaded by setScene.
+// divides by the pass count. Scene data is uploaded at creation and re-uploaded by setScene;
+// applyChanges re-sends only the buffers a change set invalidates (architecture.md §5.B "What an
+// edit rebuilds"). Sources: gpu_path_tracer.cpp (creation), gpu_path_tracer_upload.cpp (scene
+// buffers), gpu_path_tracer_pass.cpp (passes, read-back), the class in gpu_path_tracer_impl.h.
 // Driven by one thread; renderPass submits and waits on a fence, so the editor calls it from its
 // render thread, never the UI thread.
 //

@@ -18,6 +18,8 @@
 // place that draws the next direction and the one pdf the MIS weights of analytic lights use, so
 // a light hit by a sampled direction is weighted with the pdf of the sampler actually used.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.
+// samplePixel (one path, term for term) is in cpu_path_tracer_path.cpp, the rest in
+// cpu_path_tracer.cpp.
 #pragma once
 
 #include "render/reference/cpu_camera.h"
