@@ -359,8 +359,22 @@ Bvh buildBvh(const Scene& scene) {
         bvh.triangles[i] = tris[order[i]];
         bvh.meshTriangles[i] = source[order[i]];
     }
+    bvh.builtSahCost = bvhSahCost(bvh);
     bvh.buildSeconds = timer.seconds();
     return bvh;
+}
+
+float bvhSahCost(const Bvh& bvh) {
+    auto area = [](const BvhNode& n) {
+        const glm::vec3 e = glm::max(vec3Of(n.boundsMax) - vec3Of(n.boundsMin), glm::vec3(0.0f));
+        return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+    };
+    if (bvh.triangles.empty() || !(area(bvh.nodes[0]) > 0.0f))
+        return 0.0f;
+    double cost = 0.0;
+    for (const BvhNode& n : bvh.nodes)
+        cost += double(area(n)) * (n.count > 0 ? double(n.count) : kTraversalCost);
+    return float(cost / double(area(bvh.nodes[0])));
 }
 
 bool intersect(const Bvh& bvh, const glm::vec3& origin, const glm::vec3& dir, float tMin,

@@ -44,6 +44,9 @@ struct Bvh {
     // recompute an object's world-space triangles in place after a move.
     std::vector<uint32_t> meshTriangles;
     double buildSeconds = 0.0;
+    // bvhSahCost right after buildBvh: a refit that has made the tree much costlier than this
+    // is replaced by a fresh build (render/session/bvh_update.cpp).
+    float builtSahCost = 0.0f;
 };
 
 // One object's non-degenerate world-space triangles in mesh order, as buildBvh makes them
@@ -63,6 +66,10 @@ struct BvhHit {
 // Builds over every object's mesh transformed to world space. Degenerate (zero-area) triangles
 // are skipped. An empty scene gives a single node and no triangles (traversal checks for that).
 Bvh buildBvh(const Scene& scene);
+
+// Expected cost of a ray through the tree relative to the root box (surface-area heuristic: sum
+// over nodes of area / root area, times the triangle count at leaves, 1 per interior node).
+float bvhSahCost(const Bvh& bvh);
 
 // Closest hit along origin + t * dir for t in (tMin, tMax); false if none.
 bool intersect(const Bvh& bvh, const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax,

@@ -113,6 +113,25 @@ TEST(BvhRefit, MaterialChangeRewritesTheMaterialIndex) {
     expectSameHits(bvh, buildBvh(scene), 8);
 }
 
+TEST(BvhRefit, FarMovesMakeTheTreeCostlierSmallOnesDoNot) {
+    Scene scene = twoObjects();
+    Bvh bvh = buildBvh(scene);
+    ASSERT_GT(bvh.builtSahCost, 0.0f);
+    EXPECT_EQ(bvhSahCost(bvh), bvh.builtSahCost);
+    scene.objects[0].transform.translation.x += 0.05f;
+    ASSERT_TRUE(refitObjects(bvh, scene, {0}));
+    EXPECT_LT(bvhSahCost(bvh), 1.1f * bvh.builtSahCost);
+    // Two objects built in the same place share subtrees; pulling one out of the other
+    // stretches every shared box across the gap (what the session's rebuild threshold,
+    // bvh_update.cpp, catches).
+    scene.objects[0].transform.translation = scene.objects[1].transform.translation;
+    Bvh mixed = buildBvh(scene);
+    scene.objects[0].transform.translation.y += 6.0f;
+    ASSERT_TRUE(refitObjects(mixed, scene, {0}));
+    EXPECT_GT(bvhSahCost(mixed), 1.5f * mixed.builtSahCost);
+    expectSameHits(mixed, buildBvh(scene), 9);
+}
+
 TEST(BvhRefit, RefusesAnotherMesh) {
     Scene scene = twoObjects();
     Bvh bvh = buildBvh(scene);

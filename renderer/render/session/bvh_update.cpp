@@ -10,6 +10,10 @@ namespace {
 
 enum class BvhWork { None, Refit, Build };
 
+// How much costlier than at its build a refitted tree may get (surface-area heuristic) before the
+// next move rebuilds it: a drag across the scene stays fast to trace, small moves never rebuild.
+constexpr float kMaxRefitCostGrowth = 1.5f;
+
 // Object properties whose edit keeps the object's triangle count: its triangles are recomputed
 // in place (transform, material index). A mesh edit changes the triangles themselves.
 bool refittable(const std::string& property) {
@@ -47,7 +51,10 @@ std::shared_ptr<const scene::Bvh> updateBvh(std::shared_ptr<const scene::Bvh> cu
         return current;
     if (work == BvhWork::Refit && current && !moved.empty()) {
         auto refitted = std::make_shared<scene::Bvh>(*current);
-        if (scene::refitObjects(*refitted, after, moved)) {
+        // A refit keeps the topology of the last build; once moves have made the boxes overlap
+        // so much that a ray costs kMaxRefitCostGrowth times what it did, build afresh.
+        if (scene::refitObjects(*refitted, after, moved) &&
+            scene::bvhSahCost(*refitted) <= kMaxRefitCostGrowth * refitted->builtSahCost) {
             ++counts.bvhRefits;
             return refitted;
         }
