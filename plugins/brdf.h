@@ -105,6 +105,9 @@ std::vector<std::string> brdfNames();
 std::span<const Brdf* const> brdfRegistry();
 // The registry index of `brdf` (its GPU type code); -1 when it is not registered.
 int brdfIndex(const Brdf& brdf);
+// A material parameter's tooltip: each plugin that reads it, "name: its tooltip", joined by "; "
+// (a shared parameter means different things: albedo for one, F0 for another).
+std::string brdfParameterTooltip(std::string_view parameter);
 // The BRDF a new material gets: the first registered plugin.
 const char* defaultBrdfName();
 // What is wrong with a plugin's traits (an unknown lobe axis, a non-finite or non-positive lobe

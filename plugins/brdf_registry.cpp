@@ -60,6 +60,15 @@ int brdfIndex(const Brdf& brdf) {
 
 const char* defaultBrdfName() { return registry().front()->name(); }
 
+std::string brdfParameterTooltip(std::string_view parameter) {
+    std::string tip;
+    for (const Brdf* b : registry())
+        for (const BrdfParameterInfo& info : b->parameters())
+            if (parameter == info.name)
+                tip += (tip.empty() ? "" : "; ") + std::string(b->name()) + ": " + info.tooltip;
+    return tip;
+}
+
 std::string brdfTraitsProblem(const Brdf& brdf) {
     const std::string who = std::string("BRDF '") + brdf.name() + "': ";
     switch (brdf.lobeAxis()) {

@@ -125,6 +125,22 @@ TEST(BrdfTraits, GpuTwinSnippetDefinesItsFunctions) {
     }
 }
 
+// A shared parameter's tooltip is each declaring plugin's own, so a panel describes it without
+// naming a plugin in the registry of properties.
+TEST(BrdfTraits, ParameterTooltipQuotesEveryPluginThatReadsIt) {
+    for (const char* parameter : {"baseColor", "roughness"}) {
+        const std::string tip = brdfParameterTooltip(parameter);
+        for (const Brdf* b : brdfRegistry())
+            for (const BrdfParameterInfo& info : b->parameters())
+                if (std::string(info.name) == parameter) {
+                    EXPECT_NE(tip.find(std::string(b->name()) + ": " + info.tooltip),
+                              std::string::npos)
+                        << tip;
+                }
+    }
+    EXPECT_EQ(brdfParameterTooltip("noSuchParameter"), "");
+}
+
 // A plugin that breaks the contract is named, not silently given another plugin's policy.
 class Broken final : public Brdf {
 public:

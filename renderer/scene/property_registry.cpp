@@ -19,17 +19,6 @@ namespace {
 
 constexpr double kUnbounded = 1e30;
 
-// A parameter several plugins share reads differently in each (albedo, F0): its tooltip is each
-// declaring plugin's own, "name: tooltip", so no BRDF is named here.
-std::string pluginParameterTip(std::string_view parameter) {
-    std::string tip;
-    for (const plugins::Brdf* b : plugins::brdfRegistry())
-        for (const plugins::BrdfParameterInfo& info : b->parameters())
-            if (parameter == info.name)
-                tip += (tip.empty() ? "" : "; ") + std::string(b->name()) + ": " + info.tooltip;
-    return tip;
-}
-
 // A chainable declaration so each property reads as one statement.
 struct Decl {
     PropertyInfo& p;
@@ -110,10 +99,11 @@ std::vector<PropertyInfo> declareMaterial() {
         .options(brdfs).noun("BRDF").required().tip(brdfTip.c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "baseColor", "Base colour", PropertyType::Color, &Material::baseColor).range(0.0, 1.0)
-        .tip(pluginParameterTip("baseColor").c_str())
+        .tip(plugins::brdfParameterTooltip("baseColor").c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "roughness", "Roughness", PropertyType::Float, &Material::roughness).range(0.0, 1.0)
-        .tip(pluginParameterTip("roughness").c_str()).cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
+        .tip(plugins::brdfParameterTooltip("roughness").c_str())
+        .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     field(l, K, "emission", "Emission", PropertyType::Color, &Material::emission).unit("W/(m^2 sr)")
         .range(0.0, kUnbounded).tip("Emitted radiance").cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     return l;
