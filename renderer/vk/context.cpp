@@ -210,7 +210,7 @@ util::Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt
     queueInfo.pQueuePriorities = &priority;
     VkPhysicalDeviceFeatures enabled{};
     enabled.shaderInt64 = VK_TRUE;
-    // Doubles carry the sampling descents' random numbers (shaders/common/env_table.glsl).
+    // Doubles carry the sampling descents' random numbers (shaders/sampling/).
     enabled.shaderFloat64 = features.shaderFloat64;
     ctx->m_float64 = features.shaderFloat64 == VK_TRUE;
     VkDeviceCreateInfo deviceInfo{};

@@ -8,7 +8,7 @@
 
 // The smallest window (k <= maxK) holding the octahedral image of the cap of half-angle
 // `halfAngle` around `axis` (env-local): render::chooseWindow's twin, probing WAVELIT_RIM_PROBES
-// points on the cap's edge and on a ring at half its angle; an image wider than
+// points on the cap's edge and on a ring at WAVELIT_RIM_INNER_RING of its angle; an image wider than
 // WAVELIT_MAX_COMPACT_EXTENT of the square gets the whole square.
 void dsChooseWindow(vec3 axis, float halfAngle, int maxK, out int k, out int ox, out int oy) {
     k = 0;
@@ -21,7 +21,7 @@ void dsChooseWindow(vec3 axis, float halfAngle, int maxK, out int k, out int ox,
     vec3 b = cross(a, t);
     vec2 lo = octToSquare(a), hi = lo;
     for (int ring = 0; ring < 2; ++ring) {
-        float theta = (ring == 0 ? 1.0 : 0.5) * halfAngle;
+        float theta = (ring == 0 ? 1.0 : WAVELIT_RIM_INNER_RING) * halfAngle;
         for (int i = 0; i < WAVELIT_RIM_PROBES; ++i) {
             float phi = 2.0 * kPi * float(i) / float(WAVELIT_RIM_PROBES);
             vec3 d = cos(theta) * a + sin(theta) * (cos(phi) * t + sin(phi) * b);

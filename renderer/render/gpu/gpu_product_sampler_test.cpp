@@ -1,4 +1,4 @@
-// The Vulkan `wavelet` and `oracle` samplers (shaders/common/direction_sampler.glsl) judged on
+// The Vulkan `wavelet` and `oracle` samplers (shaders/sampling/) judged on
 // their own: their per-hit products are built differently from the CPU's (wavelet: dense at 16^2
 // leaves; oracle: a coarser dense grid, see the GLSL), so the twin test cannot cover them.
 // For the six shading configurations of direction_sampler_test (grazing 85 degrees, mirror-like

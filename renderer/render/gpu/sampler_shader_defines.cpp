@@ -73,6 +73,7 @@ std::vector<std::string> samplerShaderDefines() {
         // chooseWindow.
         define("WHOLE_SPHERE_CAP_ANGLE", floatLiteral(kWholeSphereCapAngle)),
         define("RIM_PROBES", kRimProbes),
+        define("RIM_INNER_RING", floatLiteral(kRimInnerRing)),
         define("MAX_COMPACT_EXTENT", floatLiteral(kMaxCompactExtent)),
         // The flat product tables.
         defineUint("FLAT_HEADER_WORDS", fl::kHeaderWords),

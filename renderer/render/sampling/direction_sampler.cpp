@@ -12,35 +12,6 @@
 #include <numbers>
 
 namespace wavelit::render {
-namespace {
-
-// Field-for-field equality of what SamplerEnvironment::build reads (and the path, which names
-// the content). Images: the same pointer, else the same size and texels (a scene copy usually
-// shares the pointer; a reloaded map does not, and comparing ~1e6 texels costs ~1 ms, far less
-// than a rebuild).
-bool sameEnvironment(const scene::Environment& a, const scene::Environment& b) {
-    if (a.path != b.path || a.rotationDeg != b.rotationDeg || a.intensity != b.intensity ||
-        a.tint != b.tint)
-        return false;
-    if (a.image == b.image)
-        return true;
-    if (!a.image || !b.image)
-        return false;
-    return a.image->width == b.image->width && a.image->height == b.image->height &&
-           a.image->pixels == b.image->pixels;
-}
-
-bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironmentOptions& b) {
-    return a.maxLevel == b.maxLevel && a.minLevel == b.minLevel;
-}
-
-} // namespace
-
-bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b) {
-    return a.brdf == b.brdf && a.params.baseColor == b.params.baseColor &&
-           a.params.roughness == b.params.roughness;
-}
-
 // samplerKindName lives in render_options.cpp (one name table for CLI and samplers).
 
 std::vector<SamplerKind> allSamplerKinds() {
@@ -59,66 +30,6 @@ bool continuationFromSampler(SamplerKind kind) {
 
 SamplerKind vertexSamplerKind(SamplerKind kind) {
     return kind == SamplerKind::Mis ? SamplerKind::Env : kind;
-}
-
-std::shared_ptr<const DirectionSamplerTables>
-DirectionSamplerTables::build(const scene::Environment& env, std::vector<SamplerMaterial> materials,
-                              SamplerKind kind, const SamplerEnvironmentOptions& envOptions) {
-    return build(env, std::move(materials), kind, nullptr, envOptions);
-}
-
-std::shared_ptr<const DirectionSamplerTables>
-DirectionSamplerTables::build(const scene::Environment& env, std::vector<SamplerMaterial> materials,
-                              SamplerKind kind, const DirectionSamplerTables* previous,
-                              const SamplerEnvironmentOptions& envOptions) {
-    auto t = std::make_shared<DirectionSamplerTables>();
-    t->m_kind = kind;
-    t->m_source = env;
-    t->m_envOptions = envOptions;
-    t->m_envReused = previous && sameEnvironment(previous->m_source, env) &&
-                     sameEnvOptions(previous->m_envOptions, envOptions);
-    t->m_env = t->m_envReused ? previous->m_env
-                              : std::make_shared<const SamplerEnvironment>(
-                                    SamplerEnvironment::build(env, envOptions));
-    t->m_materials = std::move(materials);
-    if (kind != SamplerKind::Wavelet)
-        return t;
-    for (const SamplerMaterial& m : t->m_materials) {
-        // Product tables are a function of (env, plugin, params): reusable only over the same env.
-        std::shared_ptr<const MaterialProductTables> product;
-        if (t->m_envReused)
-            for (size_t i = 0; i < previous->m_products.size() && !product; ++i)
-                if (sameSampling(previous->m_materials[i], m))
-                    product = previous->m_products[i];
-        t->m_productReused.push_back(product != nullptr);
-        if (!product)
-            product = std::make_shared<const MaterialProductTables>(MaterialProductTables::build(
-                *t->m_env, chooseProductPolicy(*m.brdf, m.params, *t->m_env)));
-        t->m_products.push_back(std::move(product));
-    }
-    return t;
-}
-
-const MaterialProductTables* DirectionSamplerTables::productTables(size_t i) const {
-    return i < m_products.size() ? m_products[i].get() : nullptr;
-}
-
-bool DirectionSamplerTables::productTablesReused(size_t i) const {
-    return i < m_productReused.size() && m_productReused[i];
-}
-
-std::string DirectionSamplerTables::report() const {
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "sampler %s: env octahedral %d^2 (%s), %.1f KiB, built in %.1f ms%s\n",
-                  samplerKindName(m_kind), 1 << m_env->level(),
-                  m_env->hasLight() ? "lit" : "black", double(m_env->bytes()) / 1024.0,
-                  m_env->buildSeconds() * 1e3, m_envReused ? " (reused)" : "");
-    std::string out = line;
-    for (size_t i = 0; i < m_products.size(); ++i)
-        out += "  material " + m_materials[i].name + ": " + m_products[i]->describe() +
-               (m_productReused[i] ? " (reused)" : "") + "\n";
-    return out;
 }
 
 DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
@@ -224,7 +135,8 @@ void DirectionSampler::addProduct(SamplerKind kind) {
     const double lobeMoment = m_product ? productLobeMoment() : bsdfLobeMoment();
     const double tailMoment = tailEnvMoment(axis, capAngle);
     const double a = std::sqrt(std::max(tailMoment, 0.0)), b = std::sqrt(std::max(lobeMoment, 0.0));
-    const double minEnvShare = kind == SamplerKind::Oracle ? kOracleMinEnvShare : kWaveletMinEnvShare;
+    const double minEnvShare =
+        kind == SamplerKind::Oracle ? kOracleMinEnvShare : kWaveletMinEnvShare;
     const double envShare = std::clamp(a / std::max(a + b, 1e-300), minEnvShare, kMaxEnvShare);
     if (m_product)
         m_components = {{Technique::Product, 1.0 - envShare - bsdfShare},

@@ -11,19 +11,21 @@
 //            (samplerHasEnvNee below; docs/estimator.md "Direction samplers")
 //   wavelet  the product sampler (env localised around the reflection vector x BRDF x cos,
 //            refined below its leaves by BRDF-weighted env levels, then the env pyramid,
-//            env_product_sampler.h) for the lobe, plus bsdf (the policy's share, 0.03,
+//            env_product_sampler.h) for the lobe, plus bsdf (the policy's share, 0.1,
 //            defensive) and env sampling with a per-point share c_env ~ sqrt(M_tail) /
-//            (sqrt(M_tail) + sqrt(M_lobe)) (second moments estimated on 16^2 coarse cells /
-//            4x4 BSDF strata), clamped to [0.02, 0.8]: pdf = sum c_i p_i, so no direction with a
+//            (sqrt(M_tail) + sqrt(M_lobe)) (second moments estimated on 8^2 coarse cells /
+//            4x4 BSDF strata), clamped to [0.05, 0.8] (values: sampler_constants.h, shared
+//            with the Vulkan tracer): pdf = sum c_i p_i, so no direction with a
 //            non-zero integrand has zero pdf. Lobes narrower than 2 env texels (policy BsdfLobe)
 //            use bsdf for the lobe + env with the same share rule; black env / all-zero
 //            product: bsdf alone.
 //   oracle   a dense 128^2 product of BRDF x cos and the env over a lobe-fitted window at the
 //            exact reflection vector, refined by the env pyramid (oracle_sampler.h): the ideal
-//            the wavelet sampler approximates; 0.05 bsdf, env share as for wavelet.
+//            the wavelet sampler approximates; 0.05 bsdf, env share as for wavelet but >= 0.02.
 //
-// Contract for the tracers: build DirectionSamplerTables once per scene (and again after change
-// sets touching the environment or a material; rebuilding is per material, see build()), then per
+// Contract for the tracers: build DirectionSamplerTables (direction_sampler_tables.h) once per
+// scene (and again after change sets touching the environment or a material; rebuilding is per
+// material, see build()), then per
 // shading point construct a DirectionSampler (the wavelet kind does its per-point product work
 // here: ~1k BRDF evaluations + a 32^2 sparse product) and call sample(u1, u2, u3): u3 picks the
 // technique, u1, u2 drive it. The returned pdf is the mixture's pdf in SOLID ANGLE at the
@@ -38,11 +40,9 @@
 #pragma once
 
 #include "plugins/brdf.h"
+#include "render/sampling/direction_sampler_tables.h"
 #include "render/sampling/product/env_product_sampler.h"
-#include "render/sampling/product/env_product_tables.h"
 #include "render/session/render_options.h"
-#include "render/sampling/sampler_environment.h"
-#include "scene/scene.h"
 
 #include <glm/vec3.hpp>
 
@@ -68,63 +68,6 @@ bool samplerHasEnvNee(SamplerKind kind);
 bool continuationFromSampler(SamplerKind kind);
 // The kind a vertex's DirectionSampler is built with: `mis`'s NEE draws from `env` alone.
 SamplerKind vertexSamplerKind(SamplerKind kind);
-
-// A material as the samplers need it (scene::Material resolved to its plugin).
-struct SamplerMaterial {
-    std::string name;
-    const plugins::Brdf* brdf = nullptr;
-    plugins::BrdfParams params;
-};
-
-// The same plugin with the same parameters: the same tables over the same env (the name is only a
-// label).
-bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
-
-class DirectionSamplerTables {
-public:
-    // Builds the env tables and, for kind Wavelet, the product tables of every material
-    // (materials not in the list get none: list only those the scene uses, architecture.md §7).
-    static std::shared_ptr<const DirectionSamplerTables>
-    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
-          const SamplerEnvironmentOptions& envOptions = {});
-
-    // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
-    // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
-    // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
-    // intensity, tint) with the same envOptions; a material's MaterialProductTables when, in
-    // addition, some previous material has the same plugin and BrdfParams (the tables depend on
-    // the env and on the material only through chooseProductPolicy; comparing the inputs rather
-    // than the policy keeps this correct whatever the policy reads). previous may be nullptr.
-    // The result is identical in content to build() without `previous`.
-    static std::shared_ptr<const DirectionSamplerTables>
-    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
-          const DirectionSamplerTables* previous, const SamplerEnvironmentOptions& envOptions = {});
-
-    SamplerKind kind() const { return m_kind; }
-    const SamplerEnvironment& environment() const { return *m_env; }
-    const scene::Environment& sourceEnvironment() const { return m_source; }
-    const SamplerMaterial& material(size_t i) const { return m_materials[i]; }
-    size_t materialCount() const { return m_materials.size(); }
-    // nullptr unless kind == Wavelet.
-    const MaterialProductTables* productTables(size_t i) const;
-    // Whether build() took the piece from `previous` instead of building it (false without one).
-    bool environmentReused() const { return m_envReused; }
-    bool productTablesReused(size_t i) const;
-    // Multi-line report: env resolution, per-material choice and reason, bytes, build times
-    // (of the build that made each piece; "reused" marks pieces taken from `previous`).
-    std::string report() const;
-
-private:
-    SamplerKind m_kind = SamplerKind::Wavelet;
-    scene::Environment m_source;
-    SamplerEnvironmentOptions m_envOptions;
-    // Shared with the tables this one was built from, and with those built from it: immutable.
-    std::shared_ptr<const SamplerEnvironment> m_env;
-    bool m_envReused = false;
-    std::vector<SamplerMaterial> m_materials;
-    std::vector<std::shared_ptr<const MaterialProductTables>> m_products;
-    std::vector<bool> m_productReused;
-};
 
 // The shading configuration: an orthonormal frame (n = shading normal, t, b tangents; the BRDF's
 // local frame is (t, b, n)), the direction toward the viewer, and the material's index in the

@@ -42,11 +42,13 @@ inline constexpr double kLobeFloor = 0.02;
 // The oracle's window may shrink until its product texels are 2^-this env texels.
 inline constexpr int kOracleDepthBelowEnv = 6;
 
-// chooseWindow (sampler_window.h): the cap's rim is probed at this many azimuths (and on a ring at
-// half the angle); the octahedral map is smooth away from its folds, so a 7.5-degree spacing
-// misses at most a sliver the defensive techniques cover anyway. An image wider than
-// kMaxCompactExtent of the square has crossed a fold (or is a hemisphere): the whole square.
+// chooseWindow (sampler_window.h): the cap's rim is probed at kRimProbes azimuths (and on a ring
+// at kRimInnerRing of the angle); the octahedral map is smooth away from its folds, so a
+// 7.5-degree spacing misses at most a sliver the defensive techniques cover anyway. An image
+// wider than kMaxCompactExtent of the square has crossed a fold (or is a hemisphere): the whole
+// square.
 inline constexpr int kRimProbes = 48;
+inline constexpr double kRimInnerRing = 0.5;
 inline constexpr double kMaxCompactExtent = 0.5;
 
 } // namespace wavelit::render

@@ -41,7 +41,7 @@ ProductWindow chooseWindow(const wavelet::OctahedralMap& map, const glm::dvec3& 
     const glm::dvec3 t = glm::normalize(glm::cross(helper, a));
     const glm::dvec3 b = glm::cross(a, t);
     glm::dvec2 lo = octSquarePoint(map, a), hi = lo;
-    for (double fraction : {1.0, 0.5}) {
+    for (double fraction : {1.0, kRimInnerRing}) {
         const double theta = fraction * halfAngle;
         for (int i = 0; i < kRimProbes; ++i) {
             const double phi = 2.0 * std::numbers::pi * i / kRimProbes;

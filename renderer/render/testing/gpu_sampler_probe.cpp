@@ -22,7 +22,6 @@ namespace wavelit::render {
 namespace {
 
 constexpr int kHeaderFloats = 10; // shares (5), window (k, ox, oy), m, refine levels
-constexpr double kFourPi = 4.0 * std::numbers::pi;
 
 int infoFloats(SamplerKind kind) { return kHeaderFloats + gpuPyramidFloats(kind); }
 
@@ -86,7 +85,36 @@ glm::vec3 toLocal(const ShadingPoint& p, const glm::vec3& w) {
     return {glm::dot(w, p.t), glm::dot(w, p.b), glm::dot(w, p.n)};
 }
 
-double share(double part, double whole) { return whole > 0.0 ? part / whole : 0.5; }
+double brdfCosAt(const SamplerMaterial& material, const ShadingPoint& point, const glm::vec3& wi) {
+    const glm::vec3 local = toLocal(point, wi);
+    if (local.z <= 0.0f)
+        return 0.0;
+    return double(util::luminance(
+        material.brdf->eval(material.params, toLocal(point, point.wo), local) * local.z));
+}
+
+// The GPU's product as the production sampler: its leaves (level m of the read-back pyramid)
+// over its window, refined below them as many levels as the GPU did, with this point's BRDF.
+void buildProduct(GpuMixture& mix) {
+    if (!(mix.cProduct > 0.0) || mix.m < 1)
+        return;
+    wavelet::SquareGrid leaves(mix.m);
+    const int side = 1 << mix.m, offset = ((1 << (2 * mix.m)) - 1) / 3;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            leaves.at(x, y) = mix.mass[size_t(offset + y * side + x)];
+    mix.product = EnvProductSampler::buildDense(*mix.env, {mix.k, mix.ox, mix.oy}, leaves);
+    if (!mix.product)
+        return;
+    const SamplerEnvironment* env = mix.env;
+    const SamplerMaterial* material = mix.material;
+    const ShadingPoint point = mix.point;
+    mix.product->setLobeRefinement(
+        [env, material, point](const glm::dvec3& d) {
+            return brdfCosAt(*material, point, glm::vec3(env->toWorld(d)));
+        },
+        mix.refineLevels);
+}
 
 } // namespace
 
@@ -95,92 +123,7 @@ int gpuPyramidFloats(SamplerKind kind) {
     return ((1 << (2 * (m + 1))) - 1) / 3;
 }
 
-double GpuMixture::brdfCos(const glm::vec3& wi) const {
-    const glm::vec3 local = toLocal(point, wi);
-    if (local.z <= 0.0f)
-        return 0.0;
-    return double(util::luminance(
-        material->brdf->eval(material->params, toLocal(point, point.wo), local) * local.z));
-}
-
-// dsRefineWeights: the env table's split of the cell times BRDF x cos at the children's centres,
-// plus 2% of the largest.
-void GpuMixture::refineWeights(int l, int x, int y, double w[4]) const {
-    const auto& table = env->fine().table();
-    int node = 0, reached = 0;
-    while (reached < l && table[size_t(node)].firstChild >= 0) {
-        const int shift = l - reached - 1;
-        node = table[size_t(node)].firstChild + (((x >> shift) & 1) | (((y >> shift) & 1) << 1));
-        ++reached;
-    }
-    for (int c = 0; c < 4; ++c)
-        w[c] = 1.0;
-    if (reached == l && table[size_t(node)].firstChild >= 0) {
-        auto split = [](float s, double& p0, double& p1) {
-            if (std::signbit(s)) {
-                p1 = -double(s);
-                p0 = 1.0 - p1;
-            } else {
-                p0 = double(s);
-                p1 = 1.0 - p0;
-            }
-        };
-        double py0, py1, pl0, pr0, pl1, pr1;
-        split(table[size_t(node)].py0, py0, py1);
-        split(table[size_t(node)].px0y0, pl0, pr0);
-        split(table[size_t(node)].px0y1, pl1, pr1);
-        w[0] = py0 * pl0;
-        w[1] = py0 * pr0;
-        w[2] = py1 * pl1;
-        w[3] = py1 * pr1;
-    }
-    const double side = std::ldexp(1.0, -(l + 1));
-    double h[4], hmax = 0.0;
-    for (int c = 0; c < 4; ++c) {
-        const glm::dvec2 centre((2 * x + (c & 1) + 0.5) * side, (2 * y + (c >> 1) + 0.5) * side);
-        h[c] = brdfCos(glm::vec3(env->toWorld(env->map().toDirection(0, centre))));
-        hmax = std::max(hmax, h[c]);
-    }
-    if (hmax > 0.0 && std::isfinite(hmax))
-        for (int c = 0; c < 4; ++c)
-            w[c] *= h[c] + 0.02 * hmax;
-}
-
-double GpuMixture::productPdf(glm::dvec2 p) const {
-    const int level = k + m, shift = m - 1, side = 1 << m;
-    const double scale = std::ldexp(1.0, level);
-    const int gx = int(p.x * scale), gy = int(p.y * scale);
-    const int lx = gx - (ox << shift), ly = gy - (oy << shift);
-    if (lx < 0 || ly < 0 || lx >= side || ly >= side)
-        return 0.0;
-    double probability = 1.0;
-    int x = 0, y = 0;
-    for (int l = 0; l < m; ++l) {
-        const int s = 1 << (l + 1), off = ((1 << (2 * (l + 1))) - 1) / 3;
-        const size_t c0 = size_t(off + 2 * y * s + 2 * x), c1 = c0 + size_t(s);
-        const double a = mass[c0], b = mass[c0 + 1], c = mass[c1], d = mass[c1 + 1];
-        const int cx = (lx >> (m - 1 - l)) & 1, cy = (ly >> (m - 1 - l)) & 1;
-        const double row = cy == 0 ? a + b : c + d;
-        const double column = cy == 0 ? (cx == 0 ? a : b) : (cx == 0 ? c : d);
-        probability *= share(row, a + b + c + d) * share(column, row);
-        x = 2 * x + cx;
-        y = 2 * y + cy;
-    }
-    int l = level, x2 = gx, y2 = gy;
-    for (int r = 0; r < refineLevels; ++r) {
-        double w[4];
-        refineWeights(l, x2, y2, w);
-        const double scale2 = std::ldexp(1.0, l + 1);
-        const int cx = std::clamp(int(p.x * scale2) - 2 * x2, 0, 1);
-        const int cy = std::clamp(int(p.y * scale2) - 2 * y2, 0, 1);
-        const double row = cy == 0 ? w[0] + w[1] : w[2] + w[3];
-        probability *= share(row, w[0] + w[1] + w[2] + w[3]) * share(w[2 * cy + cx], row);
-        ++l;
-        x2 = 2 * x2 + cx;
-        y2 = 2 * y2 + cy;
-    }
-    return probability * env->fine().pdfWithin({l, x2, y2}, p);
-}
+double GpuMixture::brdfCos(const glm::vec3& wi) const { return brdfCosAt(*material, point, wi); }
 
 double GpuMixture::pdf(const glm::vec3& wi) const {
     const glm::vec3 local = toLocal(point, wi);
@@ -190,9 +133,8 @@ double GpuMixture::pdf(const glm::vec3& wi) const {
         v += cBsdf * material->brdf->pdf(material->params, toLocal(point, point.wo), local);
     if (cEnv > 0)
         v += cEnv * env->pdfLocal(env->toLocal(glm::dvec3(wi)));
-    if (cProduct > 0)
-        v += cProduct *
-             productPdf(octSquarePoint(env->map(), env->toLocal(glm::dvec3(wi)))) / kFourPi;
+    if (cProduct > 0 && product)
+        v += cProduct * product->pdfLocal(env->toLocal(glm::dvec3(wi)));
     return v;
 }
 
@@ -227,7 +169,8 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
     if (!packed)
         return packed.error();
     auto spirv = compileWithBrdfDispatch(kernelSource(kind), "gpu_sampler_probe.comp",
-                                         {{gpuShaderDirectory(), gpuPluginDirectory()}, samplerShaderDefines()});
+                                         {{gpuShaderDirectory(), gpuPluginDirectory()},
+                                          samplerShaderDefines()});
     if (!spirv)
         return spirv.error();
     const size_t total = points.size() * size_t(drawsPerPoint);
@@ -302,6 +245,7 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
         mix.env = &tables.environment();
         mix.material = &tables.material(points[c].material);
         mix.point = points[c];
+        buildProduct(mix);
         r.mixtures.push_back(std::move(mix));
     }
     r.draws.resize(total);

@@ -1,14 +1,19 @@
-// GpuSamplerProbe: runs the Vulkan tracer's direction samplers (shaders/common/
-// direction_sampler.glsl) at given shading points, outside the tracer, and reads back what each
-// mixture was built from (technique shares, product window, the product pyramid of the `wavelet`
-// and `oracle` kinds) plus draws with their returned pdfs. GpuMixture then evaluates that
-// mixture's pdf on the CPU (dsMixturePdf's twin, reading the same env tables the GPU got).
+// GpuSamplerProbe: runs the Vulkan tracer's direction samplers (shaders/sampling/, the shaders
+// the tracer compiles, with the same generated defines) at given shading points, outside the
+// tracer, and reads back what each mixture was built from (technique shares, product window, the
+// product pyramid of the `wavelet` and `oracle` kinds) plus draws with their returned pdfs.
+// GpuMixture then evaluates that mixture's pdf on the CPU WITHOUT a twin of the shader's walk:
+// the GPU's product leaves go into the production EnvProductSampler (buildDense, with the lobe
+// refinement the GPU used), whose descent is the one the shader mirrors, and the bsdf and env
+// parts are the plugin's and SamplerEnvironment's. (Evaluating the dense chi-square and variance
+// integrals on the device instead would take ~1e7 shader pdfs per configuration on lavapipe.)
 // What it is for: judging the GPU samplers where they are not twins of the CPU's (chi-square in
 // gpu_product_sampler_test.cpp) and computing their EXACT per-sample variance on the CPU (the
 // GPU variance study, tests/bench/gpu_sampler_variance_bench.cpp). Not used by rendering.
 #pragma once
 
 #include "render/sampling/direction_sampler.h"
+#include "render/sampling/product/env_product_sampler.h"
 #include "render/gpu/gpu_sampler_data.h"
 #include "util/result.h"
 #include "vk/context.h"
@@ -16,6 +21,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace wavelit::render {
@@ -28,13 +34,11 @@ struct GpuMixture {
     const SamplerEnvironment* env = nullptr;
     const SamplerMaterial* material = nullptr;
     ShadingPoint point;
+    // The product technique: the pyramid's leaves in EnvProductSampler (empty without a product).
+    std::optional<EnvProductSampler> product;
 
     double pdf(const glm::vec3& wi) const;
-    double productPdf(glm::dvec2 squarePoint) const; // per unit square area
-    double brdfCos(const glm::vec3& wi) const;       // luminance of f cos, world direction
-
-private:
-    void refineWeights(int l, int x, int y, double w[4]) const;
+    double brdfCos(const glm::vec3& wi) const; // luminance of f cos, world direction
 };
 
 struct GpuProbeDraw {

@@ -1,0 +1,75 @@
+// The tables every direction sampler of a scene draws from (issue 6; direction_sampler.h): the
+// environment's sampling view and, for `wavelet`, each material's product tables, built once per
+// scene and again, piece by piece, after change sets that invalidate a piece.
+#pragma once
+
+#include "plugins/brdf.h"
+#include "render/sampling/product/env_product_tables.h"
+#include "render/sampling/sampler_environment.h"
+#include "render/session/render_options.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wavelit::render {
+
+// A material as the samplers need it (scene::Material resolved to its plugin).
+struct SamplerMaterial {
+    std::string name;
+    const plugins::Brdf* brdf = nullptr;
+    plugins::BrdfParams params;
+};
+
+// The same plugin with the same parameters: the same tables over the same env (the name is only a
+// label).
+bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
+
+class DirectionSamplerTables {
+public:
+    // Builds the env tables and, for kind Wavelet, the product tables of every material
+    // (materials not in the list get none: list only those the scene uses, architecture.md §7).
+    static std::shared_ptr<const DirectionSamplerTables>
+    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
+          const SamplerEnvironmentOptions& envOptions = {});
+
+    // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
+    // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
+    // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
+    // intensity, tint) with the same envOptions; a material's MaterialProductTables when, in
+    // addition, some previous material has the same plugin and BrdfParams (the tables depend on
+    // the env and on the material only through chooseProductPolicy; comparing the inputs rather
+    // than the policy keeps this correct whatever the policy reads). previous may be nullptr.
+    // The result is identical in content to build() without `previous`.
+    static std::shared_ptr<const DirectionSamplerTables>
+    build(const scene::Environment& env, std::vector<SamplerMaterial> materials, SamplerKind kind,
+          const DirectionSamplerTables* previous, const SamplerEnvironmentOptions& envOptions = {});
+
+    SamplerKind kind() const { return m_kind; }
+    const SamplerEnvironment& environment() const { return *m_env; }
+    const scene::Environment& sourceEnvironment() const { return m_source; }
+    const SamplerMaterial& material(size_t i) const { return m_materials[i]; }
+    size_t materialCount() const { return m_materials.size(); }
+    // nullptr unless kind == Wavelet.
+    const MaterialProductTables* productTables(size_t i) const;
+    // Whether build() took the piece from `previous` instead of building it (false without one).
+    bool environmentReused() const { return m_envReused; }
+    bool productTablesReused(size_t i) const;
+    // Multi-line report: env resolution, per-material choice and reason, bytes, build times
+    // (of the build that made each piece; "reused" marks pieces taken from `previous`).
+    std::string report() const;
+
+private:
+    SamplerKind m_kind = SamplerKind::Wavelet;
+    scene::Environment m_source;
+    SamplerEnvironmentOptions m_envOptions;
+    // Shared with the tables this one was built from, and with those built from it: immutable.
+    std::shared_ptr<const SamplerEnvironment> m_env;
+    bool m_envReused = false;
+    std::vector<SamplerMaterial> m_materials;
+    std::vector<std::shared_ptr<const MaterialProductTables>> m_products;
+    std::vector<bool> m_productReused;
+};
+
+} // namespace wavelit::render
