@@ -69,9 +69,11 @@ TEST(EnvProductTables, FlatExportRoundTrips) {
     // bytes() counts the export without building it.
     EXPECT_EQ(t.bytes(), 4 * (flat.header.size() + flat.nodeWords.size() + flat.scaling.size()));
     for (int bin = 0; bin < t.binCount(); bin += 97) {
-        const uint32_t* b = &flat.header[5 + 4 * size_t(bin)];
-        EXPECT_EQ(int(b[0]), t.window(bin).k);
-        const wavelet::SparseHaar decoded = unflattenFactor(flat, int(b[3]), t.policy().productLevel);
+        namespace fl = flat_layout;
+        const uint32_t* b = &flat.header[size_t(fl::binWordsAt(bin))];
+        EXPECT_EQ(int(b[fl::kBinK]), t.window(bin).k);
+        const wavelet::SparseHaar decoded =
+            unflattenFactor(flat, int(b[fl::kBinFactor]), t.policy().productLevel);
         const wavelet::SparseHaar& original = t.envFactor(bin);
         ASSERT_EQ(decoded.nodes.size(), original.nodes.size());
         for (size_t n = 0; n < original.nodes.size(); ++n)
