@@ -50,9 +50,10 @@ int takeShare(bool drawing, double p0, double p1, int part, inout double u,
     return part;
 }
 
-// Which child (0, 1) of cell index c at level l holds square coordinate t.
-int childHolding(double t, int l, int c) {
-    return clamp(int(t * double(1 << (l + 1))) - 2 * c, 0, 1);
+// Which child (0, 1) of cell index c at level l holds square coordinate t (0 when drawing: the
+// draw does not read it).
+int childHolding(bool drawing, double t, int l, int c) {
+    return drawing ? 0 : clamp(int(t * double(1 << (l + 1))) - 2 * c, 0, 1);
 }
 
 // 4^l for l <= 31 (the oracle's sub-cells reach level 17: 1u << 2l would overflow).
@@ -88,9 +89,9 @@ double envDescend(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout int x
         EnvNode n = envNodes[node];
         double p0, p1;
         decodeSplit(n.py0, p0, p1);
-        int cy = takeShare(drawing, p0, p1, childHolding(p.y, l, y), u.y, probability);
+        int cy = takeShare(drawing, p0, p1, childHolding(drawing, p.y, l, y), u.y, probability);
         decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, p0, p1);
-        int cx = takeShare(drawing, p0, p1, childHolding(p.x, l, x), u.x, probability);
+        int cx = takeShare(drawing, p0, p1, childHolding(drawing, p.x, l, x), u.x, probability);
         node = n.firstChild + cx + 2 * cy;
         l += 1;
         x = 2 * x + cx;
@@ -142,10 +143,12 @@ double envCellMass(int l, int x, int y, out int node, out bool exact) {
     while (reached < l && envNodes[node].firstChild >= 0) {
         int shift = l - reached - 1;
         int cx = (x >> shift) & 1, cy = (y >> shift) & 1;
-        double w[4];
-        envChildShares(node, w);
-        mass *= w[cx + 2 * cy];
-        node = envNodes[node].firstChild + cx + 2 * cy;
+        EnvNode n = envNodes[node];
+        double py0, py1, px0, px1;
+        decodeSplit(n.py0, py0, py1);
+        decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, px0, px1);
+        mass *= (cy == 0 ? py0 : py1) * (cx == 0 ? px0 : px1);
+        node = n.firstChild + cx + 2 * cy;
         ++reached;
     }
     exact = reached == l;

@@ -187,9 +187,9 @@ double dsDescendProduct(DirSampler s, bool drawing, inout dvec2 u, dvec2 p, out 
         double w[4], p0, p1;
         dsRefineWeights(s, l, x, y, w);
         dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
-        int cy = takeShare(drawing, p0, p1, childHolding(p.y, l, y), u.y, probability);
+        int cy = takeShare(drawing, p0, p1, childHolding(drawing, p.y, l, y), u.y, probability);
         dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
-        int cx = takeShare(drawing, p0, p1, childHolding(p.x, l, x), u.x, probability);
+        int cx = takeShare(drawing, p0, p1, childHolding(drawing, p.x, l, x), u.x, probability);
         l += 1;
         x = 2 * x + cx;
         y = 2 * y + cy;
