@@ -31,7 +31,15 @@ std::string num(double v) {
 }
 
 std::string vec(const glm::vec3& v) {
-    return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]";
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on `"[" + std::string` chains.
+    std::string out = "[";
+    out += num(v.x);
+    out += ", ";
+    out += num(v.y);
+    out += ", ";
+    out += num(v.z);
+    out += "]";
+    return out;
 }
 
 std::string pdfs(const std::vector<PathPdf>& p) {
