@@ -112,7 +112,7 @@ TEST(BrdfTraits, LobeAxisIsWhereTheSamplesGo) {
 
 // The twin's snippet is in plugins/ next to this file and defines the three functions it names.
 TEST(BrdfTraits, GpuTwinSnippetDefinesItsFunctions) {
-    const std::filesystem::path dir = std::filesystem::path(__FILE__).parent_path();
+    const std::filesystem::path dir = WAVELIT_PLUGIN_DIR; // where the GPU tracer reads them
     for (const Brdf* b : brdfRegistry()) {
         const BrdfGpuTwin t = b->gpuTwin();
         std::ifstream file(dir / t.snippet);
