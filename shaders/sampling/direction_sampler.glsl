@@ -3,7 +3,8 @@
 // mixture it draws from, and the tracer divides by it (architecture.md §4: never the paper's eq 7).
 //
 //   uniform, cosine, bsdf   hemisphere / plugin sampling, as on the CPU
-//   env                     the environment's quadtree (sampler_environment.glsl)
+//   env                     the environment's equirect texels by luminance x solid angle
+//                           (env_exact.glsl; the exact pdf of the radiance's pieces)
 //   mis                     bsdf WAVELIT_MIS_WEIGHT + env the rest
 //   wavelet                 per hit: the env factor of the reflection direction's bin times
 //                           BRDF x cos, dense in private memory, refined below its leaves
@@ -31,6 +32,7 @@
 #include "common/octahedral.glsl"
 #include "common/sampling.glsl"
 #include "sampling/sampler_environment.glsl"
+#include "sampling/env_exact.glsl"
 #include "sampling/product/env_product_sampler.glsl"
 #include "sampling/oracle_sampler.glsl"
 
@@ -133,6 +135,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     s.baseColor = baseColor;
     s.roughness = roughness;
     s.cosSinYaw = g.cosSinYaw;
+    s.exactOffset = g.tailOffset + uint((1 << WAVELIT_TAIL_LEVEL) * (1 << WAVELIT_TAIL_LEVEL));
     if (g.kind == kSamplerUniform) {
         s.cUniform = 1.0;
         return s;
@@ -200,7 +203,7 @@ float dsMixturePdf(DirSampler s, vec3 wi, dvec2 p) {
     if (s.cUniform > 0.0) pdf += double(s.cUniform) * (local.z > 0.0 ? double(0.5 * kInvPi) : 0.0LF);
     if (s.cCosine > 0.0) pdf += double(s.cCosine) * double(cosineHemispherePdf(local));
     if (s.cBsdf > 0.0) pdf += double(s.cBsdf) * double(brdfPdf(s.brdfType, s.roughness, s.wo, local));
-    if (s.cEnv > 0.0) pdf += double(s.cEnv) * envPdfWithin(0, 0, 0, p) / double(kFourPi);
+    if (s.cEnv > 0.0) pdf += double(s.cEnv) * envExactPdf(s.exactOffset, wi, s.cosSinYaw);
     if (s.cProduct > 0.0) pdf += double(s.cProduct) * dsProductPdf(s, p) / double(kFourPi);
     return float(pdf);
 }
@@ -224,18 +227,23 @@ bool dsSample(DirSampler s, float u1, float u2, float u3, out vec3 wi, out float
         pdf = dsPdf(s, wi);
         return pdf > 0.0;
     }
-    bool tabulated = false;
+    bool tabulated = false, exact = false;
     dvec2 p = dvec2(0.0LF);
     double density;
     if (s.cProduct > 0.0 && u3 < s.cProduct) {
         p = dsSampleProduct(s, dvec2(u1, u2), density);
         tabulated = true;
     } else if (s.cEnv > 0.0 && (s.cBsdf == 0.0 || u3 >= s.cProduct + s.cBsdf)) {
-        p = envSampleWithin(0, 0, 0, dvec2(u1, u2), density);
-        tabulated = true;
+        // The exact env technique: its pdf is read at the float direction, as the radiance is;
+        // the product's at that direction's square point.
+        vec3 local = envExactSample(s.exactOffset, dvec2(u1, u2));
+        wi = normalize(envToWorld(s.cosSinYaw, local));
+        p = dvec2(octToSquare(local));
+        exact = true;
     }
-    if (tabulated) {
-        wi = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
+    // One call site of dsMixturePdf (it inlines the product's pdf).
+    if (exact || tabulated) {
+        if (!exact) wi = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
         pdf = dsMixturePdf(s, wi, p);
     } else {
         vec3 local, f;

@@ -37,6 +37,7 @@ struct DirSampler {
     vec3 baseColor;
     float roughness;
     vec2 cosSinYaw;
+    uint exactOffset; // word offset of the exact env tables (sampling/env_exact.glsl)
 };
 
 struct SamplerGlobals {

@@ -88,6 +88,17 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             for (int x = 0; x < side; ++x)
                 d.words.push_back(
                     std::bit_cast<uint32_t>(float(env.cellAverage(kTailLevel, x, y))));
+        // The exact env technique's tables right after (sampling/env_exact.glsl).
+        const EquirectEnvSampler& exact = env.exact();
+        d.words.push_back(uint32_t(exact.width()));
+        d.words.push_back(uint32_t(exact.height()));
+        for (const std::vector<double>* v :
+             {&exact.marginal(), &exact.rowSolidAngle(), &exact.conditional()})
+            for (double x : *v) {
+                const uint64_t bits = std::bit_cast<uint64_t>(x);
+                d.words.push_back(uint32_t(bits));
+                d.words.push_back(uint32_t(bits >> 32));
+            }
     }
     if (d.words.empty())
         d.words.push_back(0);

@@ -5,7 +5,10 @@
 //   words      every used material's flat product tables (MaterialProductTables::flatten(): header,
 //              node words, scaling floats, each at its own offset), then the env's cell averages
 //              at level kTailLevel (sampler_constants.h) as float bits at tailOffset (the
-//              mixture's tail estimate)
+//              mixture's tail estimate), then the exact env technique's tables at
+//              tailOffset + 4^kTailLevel (EquirectEnvSampler: width, height, its marginal CDF,
+//              row solid angles and conditional CDFs, doubles as two words, low first;
+//              sampling/env_exact.glsl)
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).
 #pragma once
 

@@ -216,7 +216,7 @@ glm::vec3 DirectionSampler::brdfCos(const glm::vec3& wi) const {
     return m_material->brdf->eval(m_material->params, m_woLocal, l) * l.z;
 }
 
-double DirectionSampler::techniquePdf(Technique t, const glm::vec3& local,
+double DirectionSampler::techniquePdf(Technique t, const glm::vec3& wi, const glm::vec3& local,
                                       const glm::dvec3& envLocal) const {
     switch (t) {
     case Technique::Uniform:
@@ -226,7 +226,7 @@ double DirectionSampler::techniquePdf(Technique t, const glm::vec3& local,
     case Technique::Bsdf:
         return m_material->brdf->pdf(m_material->params, m_woLocal, local);
     case Technique::Env:
-        return m_tables->environment().pdfLocal(envLocal);
+        return m_tables->environment().pdfWorld(wi); // the texel the radiance reads at wi
     case Technique::Product:
         return m_product->pdfLocal(envLocal);
     }
@@ -237,7 +237,7 @@ double DirectionSampler::mixturePdf(const glm::vec3& wi, const glm::dvec3& envLo
     const glm::vec3 local = toShading(wi);
     double p = 0.0;
     for (const Component& c : m_components)
-        p += c.weight * techniquePdf(c.technique, local, envLocal);
+        p += c.weight * techniquePdf(c.technique, wi, local, envLocal);
     return p;
 }
 
@@ -260,7 +260,7 @@ std::vector<ComponentPdf> DirectionSampler::componentPdfs(const glm::vec3& wi) c
     std::vector<ComponentPdf> out;
     for (const Component& c : m_components)
         out.push_back({techniqueName(int(c.technique)), c.weight,
-                       techniquePdf(c.technique, local, envLocal)});
+                       techniquePdf(c.technique, wi, local, envLocal)});
     return out;
 }
 
@@ -302,9 +302,11 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
     DirectionSample out;
     out.technique = techniqueName(int(m_components[pick].technique));
     if (envLocal) {
-        // Tabulated techniques: their pdfs are evaluated at the double direction that was
+        // Tabulated techniques: the product's pdf is evaluated at the double direction that was
         // drawn. Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a
         // sun's texel next to sky is 1e6 x denser, so pdf(float wi) there would be a firefly.
+        // The env technique's pdf is read at the float wi (pdfWorld), the texel whose radiance
+        // the tracer then reads, so L / p_env stays the env integral either way.
         out.wi = glm::vec3(glm::normalize(env.toWorld(*envLocal)));
         out.pdf = float(mixturePdf(out.wi, *envLocal));
     } else {

@@ -118,7 +118,8 @@ private:
     };
     glm::vec3 toShading(const glm::vec3& w) const;
     glm::vec3 fromShading(const glm::vec3& w) const;
-    double techniquePdf(Technique t, const glm::vec3& local, const glm::dvec3& envLocal) const;
+    double techniquePdf(Technique t, const glm::vec3& wi, const glm::vec3& local,
+                        const glm::dvec3& envLocal) const;
     double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const;
     void addProduct(SamplerKind kind);
     double productLobeMoment() const;

@@ -133,7 +133,9 @@ SamplerEnvironment SamplerEnvironment::build(const scene::Environment& env,
                 coarse.at(x, y) = 0.25 * (fine.at(2 * x, 2 * y) + fine.at(2 * x + 1, 2 * y) +
                                           fine.at(2 * x, 2 * y + 1) + fine.at(2 * x + 1, 2 * y + 1));
     }
-    if (s.m_mips[0].at(0, 0) > 0.0) {
+    s.m_exact = EquirectEnvSampler::build(env);
+    s.m_lookup.emplace(env);
+    if (s.m_mips[0].at(0, 0) > 0.0 && s.m_exact.hasLight()) {
         auto sampler = wavelet::HierarchicalSampler::build(wavelet::ScalingTree::fromGrid(grid));
         if (sampler)
             s.m_fine = std::move(*sampler);
@@ -159,20 +161,23 @@ glm::dvec3 SamplerEnvironment::toWorld(const glm::dvec3& d) const {
 }
 
 wavelet::DirectionSample SamplerEnvironment::sampleLocal(glm::dvec2 u) const {
-    const wavelet::SquareSample s = m_fine->sample(u);
-    return {m_map.toDirection(0, s.point), s.pdf / (4.0 * kPi)};
+    double pdf = 0.0;
+    const glm::dvec3 d = m_exact.sampleLocal(u, pdf);
+    return {d, pdf};
 }
 
-double SamplerEnvironment::pdfLocal(const glm::dvec3& local) const {
+double SamplerEnvironment::pdfWorld(const glm::vec3& wi) const {
     if (!m_fine)
         return 0.0;
-    return m_fine->pdf(octSquarePoint(m_map, local)) / (4.0 * kPi);
+    return m_exact.pdfUv(m_lookup->equirect(wi));
 }
 
 size_t SamplerEnvironment::bytes() const {
     size_t b = m_fine ? m_fine->table().size() * sizeof(wavelet::HierarchicalSampler::TableNode) : 0;
     for (const auto& g : m_mips)
         b += g.values.size() * sizeof(double);
+    b += (m_exact.marginal().size() + m_exact.rowSolidAngle().size() +
+          m_exact.conditional().size()) * sizeof(double);
     return b;
 }
 

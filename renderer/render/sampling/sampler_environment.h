@@ -8,13 +8,18 @@
 //    N = ceil(log2(height)) + 1 capped at `maxLevel`: one octahedral texel is then at most about
 //    one equirect texel near the equator;
 //  - its mip pyramid of cell averages (what product windows read as the env factor);
-//  - a HierarchicalSampler over it: the `env` technique and the fine pyramid that product
-//    samplers descend into below their own leaves (architecture.md §4.1, item 1).
+//  - a HierarchicalSampler over it: the fine pyramid that product samplers descend into below
+//    their own leaves (architecture.md §4.1, item 1);
+//  - the `env` technique itself (sampleLocal, pdfWorld): EquirectEnvSampler, the radiance's own
+//    equirect texels by luminance x solid angle, whose pdf is exact where the conservative map's
+//    dilates a small sun over its neighbours (docs/performance.md "Exact environment pdf").
 // Rotation is an isometry, so solid-angle pdfs are the same in both frames.
 // Measures: pdfLocal is per unit SOLID ANGLE (square pdf / 4 pi, the octahedral Jacobian).
 // Immutable after build; const methods are thread-safe.
 #pragma once
 
+#include "render/lights/cpu_environment.h"
+#include "render/sampling/equirect_env_sampler.h"
 #include "scene/scene.h"
 #include "wavelet/cap_map.h"
 #include "wavelet/hierarchical_sampler.h"
@@ -50,9 +55,12 @@ public:
     glm::dvec3 toLocal(const glm::dvec3& world) const;
     glm::dvec3 toWorld(const glm::dvec3& local) const;
 
-    // The env technique in env-local directions.
+    // The env technique (EquirectEnvSampler) in env-local directions; pdfWorld reads the texel
+    // the tracer's radiance lookup reads at world direction wi (CpuEnvironment::equirect).
     wavelet::DirectionSample sampleLocal(glm::dvec2 u) const;
-    double pdfLocal(const glm::dvec3& local) const;
+    double pdfWorld(const glm::vec3& wi) const;
+    double pdfLocal(const glm::dvec3& local) const { return pdfWorld(glm::vec3(toWorld(local))); }
+    const EquirectEnvSampler& exact() const { return m_exact; }
 
     size_t bytes() const; // sampling tables + pyramid
     double buildSeconds() const { return m_buildSeconds; }
@@ -62,6 +70,8 @@ private:
     int m_level = 0;
     std::vector<wavelet::SquareGrid> m_mips; // m_mips[l]: 2^l x 2^l averages
     std::optional<wavelet::HierarchicalSampler> m_fine;
+    EquirectEnvSampler m_exact;
+    std::optional<CpuEnvironment> m_lookup;
     double m_cosYaw = 1.0, m_sinYaw = 0.0;
     double m_buildSeconds = 0.0;
 };

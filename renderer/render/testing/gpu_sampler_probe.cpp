@@ -132,7 +132,7 @@ double GpuMixture::pdf(const glm::vec3& wi) const {
     if (cBsdf > 0)
         v += cBsdf * material->brdf->pdf(material->params, toLocal(point, point.wo), local);
     if (cEnv > 0)
-        v += cEnv * env->pdfLocal(env->toLocal(glm::dvec3(wi)));
+        v += cEnv * env->pdfWorld(wi);
     if (cProduct > 0 && product)
         v += cProduct * product->pdfLocal(env->toLocal(glm::dvec3(wi)));
     return v;

@@ -74,6 +74,12 @@ sphereChiSquare(const std::function<std::optional<glm::vec3>(float, float, float
                 if (std::acos(std::clamp(glm::dot(c, spot), -1.0, 1.0)) < o.hotRadius + texelRadius)
                     depth = o.hotDepth;
             }
+            if (o.texelSpotRadius > 0.0) {
+                const glm::dvec3 c = map.toDirection(0, {(x + 0.5) / fineSide, (y + 0.5) / fineSide});
+                const glm::dvec3 spot = glm::normalize(toBin(glm::dvec3(o.texelSpot)));
+                if (std::acos(std::clamp(glm::dot(c, spot), -1.0, 1.0)) < o.texelSpotRadius + texelRadius)
+                    depth = std::max(depth, o.texelSpotDepth);
+            }
             if (depth == 0) {
                 const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
                 for (int k = 0; k < 4 && depth == 0; ++k) {

@@ -31,6 +31,11 @@ struct SphereChiSquareOptions {
     int hotDepth = 6;
     std::vector<glm::vec3> hotSpots; // world directions
     double hotRadius = 0.0;          // radians
+    // A second kind of hot spot with its own radius and depth (e.g. a one-texel sun, whose
+    // texel edges cross the integration texels; 0 radius: none).
+    glm::vec3 texelSpot{0.0f, 1.0f, 0.0f};
+    double texelSpotRadius = 0.0;
+    int texelSpotDepth = 0;
     int samples = 100000;
     uint64_t seed = 7;
     // World -> binning frame (identity by default), e.g. SamplerEnvironment::toLocal.
