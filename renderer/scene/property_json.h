@@ -55,4 +55,18 @@ std::string unknownKeyProblem(const std::string& key, const JsonPlace& at, const
 // Writes the applicable registry properties of `entity` into `obj` in declaration order.
 void writeProperties(Json& obj, EntityKind kind, const void* entity);
 
+// An entity list as a file stores it: per entity its "id", its registry properties and its extras.
+template <class Entity>
+Json writeEntityArray(const std::vector<Entity>& entities, EntityKind kind) {
+    Json out = Json::array();
+    for (const Entity& e : entities) {
+        Json j = Json::object();
+        j["id"] = e.id;
+        writeProperties(j, kind, &e);
+        writeExtras(j, e.extras);
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 } // namespace wavelit::scene

@@ -156,23 +156,8 @@ util::Status saveScene(const Scene& scene, const std::string& path) {
     writeExtras(render, scene.render.extras);
     doc["camera"] = camera;
     doc["render"] = render;
-    Json materials = Json::array(), objects = Json::array();
-    for (const Material& m : scene.materials) {
-        Json j = Json::object();
-        j["id"] = m.id;
-        writeProperties(j, EntityKind::Material, &m);
-        writeExtras(j, m.extras);
-        materials.push_back(j);
-    }
-    for (const Object& o : scene.objects) {
-        Json j = Json::object();
-        j["id"] = o.id;
-        writeProperties(j, EntityKind::Object, &o);
-        writeExtras(j, o.extras);
-        objects.push_back(j);
-    }
-    doc["materials"] = materials;
-    doc["objects"] = objects;
+    doc["materials"] = writeEntityArray(scene.materials, EntityKind::Material);
+    doc["objects"] = writeEntityArray(scene.objects, EntityKind::Object);
     doc["lighting"] = scene.lightingPath.empty() ? writeLightingBody(scene.lighting) : Json(scene.lightingPath);
     return writeJson(doc, path);
 }

@@ -51,15 +51,7 @@ Json writeLightingBody(const LightingSetup& lighting) {
     writeProperties(env, EntityKind::Environment, &lighting.environment);
     writeExtras(env, lighting.environment.extras);
     out["environment"] = env;
-    Json lights = Json::array();
-    for (const Light& l : lighting.lights) {
-        Json j = Json::object();
-        j["id"] = l.id;
-        writeProperties(j, EntityKind::Light, &l);
-        writeExtras(j, l.extras);
-        lights.push_back(j);
-    }
-    out["lights"] = lights;
+    out["lights"] = writeEntityArray(lighting.lights, EntityKind::Light);
     writeExtras(out, lighting.extras);
     return out;
 }
