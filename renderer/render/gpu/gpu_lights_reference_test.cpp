@@ -5,6 +5,7 @@
 #include "render/gpu/gpu_lights_test_support.h"
 
 #include "render/reference/cpu_camera.h"
+#include "render/testing/cpu_analytic_scenes.h"
 #include "render/gpu/gpu_path_tracer.h"
 #include "render/session/integrator_factory.h"
 #include "scene/bvh.h"
@@ -38,24 +39,9 @@ constexpr double kClosedFormTolerance = 0.01;
 TEST(GpuLights, LambertPlaneUnderAPointLightIsTheClosedForm) {
     // Direct lighting only (bounces = 1), black sky: each sample is ρ/π · Φ/(4π d²) · cos θ at
     // the point its camera ray hits, which the test finds by replaying the camera jitter.
-    auto s = std::make_shared<scene::Scene>();
-    s->camera.position = glm::vec3(0.0f, 3.0f, 3.0f);
-    s->camera.target = glm::vec3(0.0f);
-    s->camera.verticalFovDeg = 40.0f;
     scene::Material m;
-    m.id = 1;
     m.baseColor = glm::vec3(kAlbedo);
-    s->materials.push_back(m);
-    scene::Object o;
-    o.id = 2;
-    o.materialId = 1;
-    auto mesh = std::make_shared<scene::TriangleMesh>();
-    const float h = 20.0f;
-    mesh->positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    mesh->indices = {0, 2, 1, 0, 3, 2};
-    o.mesh = mesh;
-    s->objects.push_back(o);
-    s->lighting.environment.intensity = 0.0f;
+    auto s = makePlaneScene(m);
     scene::Light l;
     l.type = scene::LightType::Point;
     l.position = glm::vec3(0.3f, 2.0f, -0.5f);

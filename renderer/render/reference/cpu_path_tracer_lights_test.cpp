@@ -7,6 +7,7 @@
 #include "render/reference/cpu_path_tracer.h"
 
 #include "render/reference/cpu_camera.h"
+#include "render/testing/cpu_analytic_scenes.h"
 #include "scene/bvh.h"
 #include "util/rng.h"
 
@@ -34,27 +35,6 @@ constexpr int kSize = 32;
 constexpr int kPasses = 16;
 // Strategies agree within this many combined standard errors (the brief: 3σ).
 constexpr double kStrategySigmas = 3.0;
-
-std::shared_ptr<scene::Scene> makePlaneScene(const scene::Material& material) {
-    auto s = std::make_shared<scene::Scene>();
-    s->camera.position = glm::vec3(0.0f, 3.0f, 3.0f);
-    s->camera.target = glm::vec3(0.0f);
-    s->camera.verticalFovDeg = 40.0f;
-    scene::Material m = material;
-    m.id = 1;
-    s->materials.push_back(m);
-    scene::Object o;
-    o.id = 2;
-    o.materialId = 1;
-    auto mesh = std::make_shared<scene::TriangleMesh>();
-    const float h = 20.0f;
-    mesh->positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    mesh->indices = {0, 2, 1, 0, 3, 2};
-    o.mesh = mesh;
-    s->objects.push_back(o);
-    s->lighting.environment.intensity = 0.0f; // black: only the analytic lights
-    return s;
-}
 
 scene::Material lambert() {
     scene::Material m;

@@ -62,4 +62,25 @@ std::shared_ptr<scene::Scene> makeClosedSphereScene(const scene::Material& mater
     return s;
 }
 
+std::shared_ptr<scene::Scene> makePlaneScene(const scene::Material& material) {
+    auto s = std::make_shared<scene::Scene>();
+    s->camera.position = glm::vec3(0.0f, 3.0f, 3.0f);
+    s->camera.target = glm::vec3(0.0f);
+    s->camera.verticalFovDeg = 40.0f;
+    scene::Material m = material;
+    m.id = 1;
+    s->materials.push_back(m);
+    scene::Object o;
+    o.id = 2;
+    o.materialId = 1;
+    auto mesh = std::make_shared<scene::TriangleMesh>();
+    const float h = 20.0f;
+    mesh->positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+    mesh->indices = {0, 2, 1, 0, 3, 2};
+    o.mesh = mesh;
+    s->objects.push_back(o);
+    s->lighting.environment.intensity = 0.0f; // black: only the analytic lights
+    return s;
+}
+
 } // namespace wavelit::render

@@ -28,4 +28,8 @@ std::shared_ptr<scene::Scene> makeFurnaceScene(const scene::Material& material,
 // scattering events is Le (1 + ρ + … + ρ^B). The environment is black.
 std::shared_ptr<scene::Scene> makeClosedSphereScene(const scene::Material& material);
 
+// A 40 m × 40 m plane y = 0 of `material` under a black environment, seen from (0, 3, 3) looking
+// at the origin (40° vertical field of view): only the analytic lights a test adds light it.
+std::shared_ptr<scene::Scene> makePlaneScene(const scene::Material& material);
+
 } // namespace wavelit::render
