@@ -36,7 +36,8 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
 } params;
 
 layout(push_constant) uniform Pass {
-    uvec2 seed; // options.seed ^ (pass * 0x9E3779B97F4A7C15), low and high words
+    uint seedKey; // util::PathSampler::seedKey(options.seed)
+    uint index;   // the pass, counted from 0 since the last reset
 } pass;
 
 struct BvhNode {
@@ -75,7 +76,7 @@ layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; 
 #include "sampling/direction_sampler.glsl"
 #endif
 
-#include "common/rng.glsl"
+#include "common/path_sampler.glsl"
 #include "common/camera.glsl"
 #include "common/environment.glsl"
 #include "common/bvh.glsl"
@@ -163,10 +164,9 @@ void main() {
     uvec2 size = params.size.xy;
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     uint pixelIndex = pixel.y * size.x + pixel.x;
-    uint64_t seed = (uint64_t(pass.seed.y) << 32) | uint64_t(pass.seed.x);
-    Pcg32 rng = pcgSeed(seed, uint64_t(pixelIndex));
-    float jx = pcgFloat(rng);
-    float jy = pcgFloat(rng);
+    PathSampler rng = psStart(pass.seedKey, pixelIndex, pass.index);
+    vec2 jitter = psNext2D(rng);
+    float jx = jitter.x, jy = jitter.y;
 
     vec3 origin = params.camPosition.xyz;
     vec3 dir = cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
@@ -242,11 +242,10 @@ void main() {
                          mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
 #endif
         if (lightCount > 0u) {
-            float uSelect = pcgFloat(rng);
-            float ul1 = pcgFloat(rng);
-            float ul2 = pcgFloat(rng);
+            float uSelect = psNext1D(rng);
+            vec2 ul = psNext2D(rng);
             L += beta * nextEvent(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a,
-                                  frame, wo, ng, next, uSelect, ul1, ul2, lightCount, selection,
+                                  frame, wo, ng, next, uSelect, ul.x, ul.y, lightCount, selection,
                                   triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
                                   , ds, continuationFromSampler
@@ -255,25 +254,24 @@ void main() {
         }
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         if (envNee) {
-            float ue1 = pcgFloat(rng);
-            float ue2 = pcgFloat(rng);
-            float ue3 = pcgFloat(rng);
+            vec2 ue = psNext2D(rng);
+            float ue3 = psNext1D(rng);
             if (vertexNee)
                 L += beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
-                                         mat.baseColorRoughness.a, frame, wo, ng, next, ue1, ue2,
+                                         mat.baseColorRoughness.a, frame, wo, ng, next, ue.x, ue.y,
                                          ue3, kind == kSamplerEnv, triangleCount);
         }
 #endif
 
-        float u1 = pcgFloat(rng);
-        float u2 = pcgFloat(rng);
+        vec2 u12 = psNext2D(rng);
+        float u1 = u12.x, u2 = u12.y;
         vec3 wiLocal, f;
         float pdf;
         vec3 wi;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         if (continuationFromSampler) {
             // The mixture's draw; the estimator divides by its pdf (architecture.md §4).
-            float u3 = pcgFloat(rng);
+            float u3 = psNext1D(rng);
             vec3 wiWorld;
             if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;
             wiLocal = frameToLocal(frame, wiWorld);
@@ -299,7 +297,7 @@ void main() {
 
         if (int(depth) >= kRussianRouletteDepth) {
             float q = max(kMinContinueProbability, 1.0 - max(beta.r, max(beta.g, beta.b)));
-            if (pcgFloat(rng) < q) break;
+            if (psNext1D(rng) < q) break;
             beta /= 1.0 - q;
         }
         origin = next;

@@ -10,7 +10,7 @@
 #include "render/session/integrator_factory.h"
 #include "scene/bvh.h"
 #include "scene/scene_io.h"
-#include "util/rng.h"
+#include "util/path_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,6 @@ namespace {
 using namespace gpu_lights_test;
 
 constexpr double kPiD = 3.14159265358979323846;
-constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // docs/estimator.md "Random numbers"
 // The closed form's tolerance (the brief): a delta light with bounces = 1 has no Monte Carlo
 // noise once the camera jitter is replayed, so only float rounding remains.
 constexpr double kClosedFormTolerance = 0.01;
@@ -60,10 +59,9 @@ TEST(GpuLights, LambertPlaneUnderAPointLightIsTheClosedForm) {
         for (int x = 0; x < kSize; ++x) {
             double expected = 0.0;
             for (int pass = 0; pass < kPasses; ++pass) {
-                util::Pcg32 rng(options.seed ^ (uint64_t(pass) * kPassStride),
-                                uint64_t(y) * kSize + uint64_t(x));
-                const float jx = rng.nextFloat();
-                const float jy = rng.nextFloat();
+                util::PathSampler rng(util::PathSampler::seedKey(options.seed),
+                                      uint32_t(y * kSize + x), uint32_t(pass));
+                const auto [jx, jy] = rng.next2D();
                 glm::vec3 dir = camera.direction(x, y, jx, jy), origin = camera.origin();
                 glm::dvec3 p = glm::dvec3(origin + dir * (-origin.y / dir.y));
                 glm::dvec3 d = glm::dvec3(l.position) - p;

@@ -44,8 +44,10 @@ enum Binding : uint32_t {
     kSamplerWords
 };
 
+// path_tracer.comp's push constant: what its PathSampler needs besides the pixel.
 struct PassPush {
-    uint32_t seedLo, seedHi;
+    uint32_t seedKey; // util::PathSampler::seedKey(options.seed)
+    uint32_t pass;
 };
 
 // The buffers of a scene in upload order, sized as uploadScene creates them (render_limits.h).

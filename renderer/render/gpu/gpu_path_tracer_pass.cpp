@@ -1,5 +1,6 @@
 #include "render/gpu/gpu_path_tracer_impl.h"
 
+#include "util/path_sampler.h"
 #include "util/timer.h"
 
 #include <algorithm>
@@ -9,8 +10,7 @@
 namespace wavelit::render::gpu_tracer {
 
 util::Status GpuPathTracer::renderPass() {
-    const uint64_t seed = gpuPassSeed(m_options.seed, m_passes);
-    const PassPush push{uint32_t(seed), uint32_t(seed >> 32)};
+    const PassPush push{util::PathSampler::seedKey(m_options.seed), uint32_t(m_passes)};
     const PassTiles tiles = passTiles();
     // Until a piece has been timed, a small first piece: 4 tiles (1024 pixels) take ~45 ms with
     // `wavelet` on lavapipe under load (a 1600x1000 pass took 71 s), the slowest sampler but the

@@ -12,7 +12,6 @@ namespace wavelit::render {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
-constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // golden ratio, as the CPU tracer
 
 void set4(float* dst, const glm::vec3& v, float w) {
     dst[0] = v.x;
@@ -60,10 +59,6 @@ GpuLight packGpuLight(const scene::Light& light) {
     g.sun[1] = c.oneMinusCosSun;
     g.sun[2] = c.delta ? 1.0f : 0.0f;
     return g;
-}
-
-uint64_t gpuPassSeed(uint64_t seed, int pass) {
-    return seed ^ (uint64_t(pass) * kPassStride);
 }
 
 util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::Bvh& bvh,

@@ -80,7 +80,5 @@ struct GpuSceneData {
 util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::Bvh& bvh,
                                         const RenderOptions& options, bool packEnvTexels = true);
 
-// Seed of pass `pass` (docs/estimator.md "Random numbers"): seed ^ (pass * 0x9E3779B97F4A7C15).
-uint64_t gpuPassSeed(uint64_t seed, int pass);
 
 } // namespace wavelit::render

@@ -77,11 +77,5 @@ TEST(GpuSceneData, UnknownBrdfNamesTheMaterial) {
     EXPECT_EQ(d.error().where, "/materials/0/brdf");
 }
 
-TEST(GpuSceneData, PassSeedFollowsTheEstimatorSpec) {
-    EXPECT_EQ(gpuPassSeed(5, 0), 5u);
-    EXPECT_EQ(gpuPassSeed(5, 1), 5u ^ 0x9E3779B97F4A7C15ULL);
-    EXPECT_EQ(gpuPassSeed(0, 3), 3u * 0x9E3779B97F4A7C15ULL);
-}
-
 } // namespace
 } // namespace wavelit::render

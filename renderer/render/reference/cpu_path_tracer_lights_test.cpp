@@ -9,7 +9,7 @@
 #include "render/reference/cpu_camera.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "scene/bvh.h"
-#include "util/rng.h"
+#include "util/path_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +26,6 @@ namespace wavelit::render {
 namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
-constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // docs/estimator.md
 constexpr float kAlbedo = 0.6f;
 // The brief's closed-form tolerance; the per-sample Monte Carlo noise of the area-light cases is
 // ≤ 0.3% per pixel after kPasses passes (cos θ varies by < 2% over the lights' cones).
@@ -62,9 +61,9 @@ std::unique_ptr<CpuPathTracer> makeTracer(std::shared_ptr<const scene::Scene> sc
 
 // Where the camera ray of (x, y, pass) meets the plane y = 0: the tracer's first two draws.
 glm::vec3 cameraHit(const scene::Scene& s, const RenderOptions& o, int x, int y, int pass) {
-    util::Pcg32 rng(o.seed ^ (uint64_t(pass) * kPassStride), uint64_t(y) * o.width + x);
-    const float jx = rng.nextFloat();
-    const float jy = rng.nextFloat();
+    util::PathSampler rng(util::PathSampler::seedKey(o.seed), uint32_t(y * o.width + x),
+                          uint32_t(pass));
+    const auto [jx, jy] = rng.next2D();
     CpuCamera camera(s.camera, o.width, o.height);
     glm::vec3 dir = camera.direction(x, y, jx, jy), origin = camera.origin();
     return origin + dir * (-origin.y / dir.y);

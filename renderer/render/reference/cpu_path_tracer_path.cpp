@@ -4,7 +4,7 @@
 
 #include "render/reference/cpu_surface.h"
 #include "util/hemisphere_sampling.h"
-#include "util/rng.h"
+#include "util/path_sampler.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -17,7 +17,6 @@ namespace wavelit::render {
 namespace {
 
 // docs/estimator.md constants, shared with shaders/path_tracer.comp.
-constexpr uint64_t kPassStride = 0x9E3779B97F4A7C15ULL; // pass → seed scramble (golden ratio)
 constexpr float kRayOffset = 1e-4f;                      // × max(1, |hit|): scale-aware epsilon
 constexpr float kMinContinueProbability = 0.05f;         // Russian roulette floor of q's complement
 constexpr int kRussianRouletteDepth = 2;
@@ -27,11 +26,11 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record) const {
     const uint64_t pixelIndex = uint64_t(y) * uint64_t(m_options.width) + uint64_t(x);
-    util::Pcg32 rng(m_options.seed ^ (uint64_t(pass) * kPassStride), pixelIndex);
+    util::PathSampler rng(util::PathSampler::seedKey(m_options.seed), uint32_t(pixelIndex),
+                          uint32_t(pass));
     // Draws are separate statements: C++ leaves the order of function arguments unspecified,
     // and the draw order is part of the estimator.
-    const float jx = rng.nextFloat();
-    const float jy = rng.nextFloat();
+    const auto [jx, jy] = rng.next2D();
 
     glm::vec3 origin = m_camera.origin();
     glm::vec3 dir = m_camera.direction(x, y, jx, jy);
@@ -130,9 +129,8 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
         const glm::vec3 next =
             sp.position + ng * (kRayOffset * std::max(1.0f, glm::length(sp.position)));
         if (!m_lights.empty()) {
-            const float uSelect = rng.nextFloat();
-            const float ul1 = rng.nextFloat();
-            const float ul2 = rng.nextFloat();
+            const float uSelect = rng.next1D();
+            const auto [ul1, ul2] = rng.next2D();
             PathEvent lightEvent;
             const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2,
                                           vertex ? &lightEvent : nullptr);
@@ -145,9 +143,8 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
         if (envNee) {
             // Drawn for every scattering vertex of these kinds, used where the vertex has an env
             // NEE technique (docs/estimator.md "Random numbers").
-            const float ue1 = rng.nextFloat();
-            const float ue2 = rng.nextFloat();
-            const float ue3 = rng.nextFloat();
+            const auto [ue1, ue2] = rng.next2D();
+            const float ue3 = rng.next1D();
             if (neeSampler) {
                 const glm::vec3 e =
                     envNextEvent(mat, frame, *neeSampler, wo, ng, next, ue1, ue2, ue3,
@@ -156,12 +153,11 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             }
         }
 
-        const float u1 = rng.nextFloat();
-        const float u2 = rng.nextFloat();
+        const auto [u1, u2] = rng.next2D();
         // The technique choice of a DirectionSampler mixture: drawn only when one draws the
         // continuation (uniform, cosine), the draw order the Vulkan tracer shares
         // (docs/estimator.md).
-        const float u3 = sampler ? rng.nextFloat() : 0.0f;
+        const float u3 = sampler ? rng.next1D() : 0.0f;
         const ScatterDraw s = sampleScatter(mat, frame, sampler, wo, u1, u2, u3);
         if (!s.valid || !(s.pdf > 0.0f) || s.wi.z <= 0.0f) {
             if (vertex) vertex->end = "no valid direction";
@@ -194,7 +190,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             float q = std::max(kMinContinueProbability,
                                1.0f - std::max(beta.r, std::max(beta.g, beta.b)));
             if (vertex) vertex->continueProbability = 1.0f - q;
-            if (rng.nextFloat() < q) {
+            if (rng.next1D() < q) {
                 if (vertex) vertex->end = "russian roulette";
                 break;
             }
