@@ -13,14 +13,15 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -x build/release/editor/waveli
 fi
 mkdir -p out
 echo "run: no display; rendering $scene headless"
-# The default sampler (wavelet) on the default device (Vulkan: lavapipe without a GPU).
+# The default sampler (wavelet) on the default device (Vulkan: lavapipe without a GPU), for a
+# fixed time (WAVELIT_SPP=N renders N passes instead); one render writes the EXR and the PNG.
+if [ -n "${WAVELIT_SPP:-}" ]; then budget=(--spp "$WAVELIT_SPP"); else
+    budget=(--time "${WAVELIT_RENDER_SECONDS:-15}"); fi
 build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr \
-    --spp "${WAVELIT_SPP:-16}" --report out/ring_on_ground_report.json "$@"
-build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.png \
-    --spp "${WAVELIT_SPP:-16}" "$@" >/dev/null
+    --also out/ring_on_ground.png "${budget[@]}" --report out/ring_on_ground_report.json "$@"
 # Speed vs error: every sampler at equal time on the default device against a longer reference
 # (RMSE curves); the oracle is the ideal the wavelet sampler's efficiency is measured against.
-build/release/renderer/cli/wavelit-cli bench "$scene" --time "${WAVELIT_BENCH_SECONDS:-3}" \
+build/release/renderer/cli/wavelit-cli bench "$scene" --time "${WAVELIT_BENCH_SECONDS:-2}" \
     --samplers uniform,cosine,bsdf,env,mis,wavelet,oracle --width 128 --height 128 --out out/bench
 echo "run: images at $(pwd)/out/ring_on_ground.exr and $(pwd)/out/ring_on_ground.png"
 echo "run: render report at $(pwd)/out/ring_on_ground_report.json"

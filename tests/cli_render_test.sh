@@ -30,6 +30,10 @@ expect 0 -- render "$scene" -o "$tmp/out.png" "${small[@]}" --seed 5 --bounces 2
 [ -s "$tmp/out.png" ] || fail "no PNG written"
 head -c 8 "$tmp/out.png" | od -An -tx1 | grep -q "89 50 4e 47" || fail "PNG signature missing"
 expect 0 -- render "$scene" -o "$tmp/timed.exr" --width 16 --height 16 --time 0.2
+# --also: the same image a second time (README command 1's EXR + PNG from one render).
+expect 0 -- render "$scene" -o "$tmp/both.exr" --also "$tmp/both.png" --width 16 --height 16 --spp 1 --device cpu
+[ -s "$tmp/both.exr" ] && [ -s "$tmp/both.png" ] || fail "--also did not write both files"
+expect 2 ".jpg" -- render "$scene" -o "$tmp/x.exr" --also "$tmp/x.jpg"
 [ -s "$tmp/timed.exr" ] || fail "--time render wrote nothing"
 
 # Bad usage: exit 2.

@@ -1,6 +1,8 @@
 // `wavelit-cli render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]
 //  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]
-//  [--trace-outliers N --outliers OUT.json]` (the outlier tracer: render/reference/outlier_tracer.h)
+//  [--trace-outliers N --outliers OUT.json] [--also OUT2.exr|png]` (the outlier tracer:
+//  render/reference/outlier_tracer.h; --also writes the same image a second time, e.g. a PNG
+//  preview beside the EXR, without rendering it twice)
 // (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
@@ -192,7 +194,7 @@ using util::lowerExtension;
 
 int run(const std::vector<std::string>& argv) {
     std::set<std::string> flags = renderValueFlags();
-    flags.insert({"-o", "--spp", "--time", "--report", "--trace-outliers", "--outliers"});
+    flags.insert({"-o", "--also", "--spp", "--time", "--report", "--trace-outliers", "--outliers"});
     auto args = Args::parse(argv, flags);
     if (!args)
         return reportError(args.error());
@@ -201,9 +203,13 @@ int run(const std::vector<std::string>& argv) {
     auto output = args->value("-o");
     if (!output)
         return reportError(makeError(ErrorKind::Usage, "", "render needs -o OUT.exr|png"));
-    std::string ext = lowerExtension(*output);
-    if (ext != ".exr" && ext != ".png")
-        return reportError(makeError(ErrorKind::Usage, *output, "output must end in .exr or .png"));
+    const auto also = args->value("--also");
+    for (const std::string& path : {*output, also.value_or(*output)}) {
+        const std::string ext = lowerExtension(path);
+        if (ext != ".exr" && ext != ".png")
+            return reportError(
+                makeError(ErrorKind::Usage, path, "output must end in .exr or .png"));
+    }
     auto spp = args->intValue("--spp", kDefaultSpp, 1, kMaxSpp);
     auto seconds = args->doubleValue("--time", 0.0, 0.0, 1e7);
     if (!spp)
@@ -263,9 +269,12 @@ int run(const std::vector<std::string>& argv) {
     auto image = (*session)->image();
     if (!image)
         return reportError(image.error());
-    auto written = scene::writeImage(*output, *image, scene->camera.exposureEv);
-    if (!written)
-        return reportError(written.error());
+    for (const std::string& path : {*output, also.value_or(*output)}) {
+        if (auto written = scene::writeImage(path, *image, scene->camera.exposureEv); !written)
+            return reportError(written.error());
+        if (!also)
+            break;
+    }
     render::RenderStats stats = (*session)->stats();
     std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s per pass)\n", output->c_str(), options.width,
                 options.height, stats.samplesPerPixel, stats.deviceName.c_str(),
