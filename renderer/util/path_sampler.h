@@ -50,16 +50,18 @@ constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
     return reverseBits(x);
 }
 
-// The first two Sobol' dimensions (van der Corput and its x ^= x >> 1 partner), 32 bits.
+// The first two Sobol' dimensions: van der Corput (the index's bits reversed) and its partner
+// with direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1, i.e. the Pascal matrix mod 2 applied to
+// the reversed index. That matrix is the Kronecker power of [[1,0],[1,1]], so five masked
+// shift-xors apply it instead of a loop over the index's 32 bits.
 constexpr std::pair<uint32_t, uint32_t> sobol2D(uint32_t index) {
-    uint32_t x = 0, y = 0, v = 0x80000000U;
-    for (uint32_t i = index; i != 0; i >>= 1) {
-        if (i & 1U) {
-            y ^= v;
-        }
-        v ^= v >> 1;
-    }
-    x = reverseBits(index);
+    const uint32_t x = reverseBits(index);
+    uint32_t y = x;
+    y ^= (y & 0x55555555U) << 1;
+    y ^= (y & 0x33333333U) << 2;
+    y ^= (y & 0x0F0F0F0FU) << 4;
+    y ^= (y & 0x00FF00FFU) << 8;
+    y ^= (y & 0x0000FFFFU) << 16;
     return {x, y};
 }
 

@@ -23,6 +23,21 @@ TEST(PathSampler, SobolMatchesTheFirstPointsOfTheSequence) {
     }
 }
 
+// The shift-xor form equals the direction-number definition for any 32-bit index.
+TEST(PathSampler, SobolEqualsItsDirectionNumberDefinition) {
+    auto byDirectionNumbers = [](uint32_t index) {
+        uint32_t y = 0, v = 0x80000000U;
+        for (uint32_t i = index; i != 0; i >>= 1, v ^= v >> 1)
+            if (i & 1U) y ^= v;
+        return y;
+    };
+    uint32_t index = 0;
+    for (int k = 0; k < 100000; ++k, index = hashU32(index + 1)) {
+        EXPECT_EQ(sobol2D(index).second, byDirectionNumbers(index)) << index;
+        EXPECT_EQ(sobol2D(uint32_t(k)).second, byDirectionNumbers(uint32_t(k))) << k;
+    }
+}
+
 // What the tracer relies on: the first 2^k passes of one pixel put exactly one point of every 2D
 // draw into each elementary interval of area 2^-k (a (0, k, 2)-net), whatever the scramble.
 TEST(PathSampler, PassesOfOnePixelFormA02NetInEveryDraw) {

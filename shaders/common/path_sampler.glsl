@@ -29,13 +29,15 @@ uint psOwenScramble(uint x, uint seed) {
     return bitfieldReverse(x);
 }
 
+// util::sobol2D: van der Corput and the Pascal matrix mod 2 applied to it (five shift-xors).
 uvec2 psSobol2D(uint index) {
-    uint y = 0u, v = 0x80000000u;
-    for (uint i = index; i != 0u; i >>= 1) {
-        if ((i & 1u) != 0u) y ^= v;
-        v ^= v >> 1;
-    }
-    return uvec2(bitfieldReverse(index), y);
+    uint x = bitfieldReverse(index), y = x;
+    y ^= (y & 0x55555555u) << 1;
+    y ^= (y & 0x33333333u) << 2;
+    y ^= (y & 0x0F0F0F0Fu) << 4;
+    y ^= (y & 0x00FF00FFu) << 8;
+    y ^= (y & 0x0000FFFFu) << 16;
+    return uvec2(x, y);
 }
 
 PathSampler psStart(uint seedKey, uint pixelIndex, uint pass) {
