@@ -30,39 +30,47 @@ constexpr uint32_t hashU32(uint32_t x) {
     return x;
 }
 
+// Byte swap, then the bits within each byte.
 constexpr uint32_t reverseBits(uint32_t x) {
+    x = __builtin_bswap32(x);
     x = ((x >> 1) & 0x55555555U) | ((x & 0x55555555U) << 1);
     x = ((x >> 2) & 0x33333333U) | ((x & 0x33333333U) << 2);
-    x = ((x >> 4) & 0x0F0F0F0FU) | ((x & 0x0F0F0F0FU) << 4);
-    x = ((x >> 8) & 0x00FF00FFU) | ((x & 0x00FF00FFU) << 8);
-    return (x >> 16) | (x << 16);
+    return ((x >> 4) & 0x0F0F0F0FU) | ((x & 0x0F0F0F0FU) << 4);
 }
 
-// Nested uniform (Owen) scramble of the bits of x, most significant first: a hash that only
-// lets each bit depend on the bits above it (Laine-Karras on reversed bits; Vegdahl's constants).
-constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
-    x = reverseBits(x);
+// The Laine-Karras permutation with Vegdahl's constants: each output bit depends only on the
+// input bits below it (carries run upward), so on reversed bits it is a nested uniform scramble.
+constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
     x ^= x * 0x3d20adeaU;
     x += seed;
     x *= (seed >> 16) | 1U;
     x ^= x * 0x05526c56U;
     x ^= x * 0x53a22864U;
-    return reverseBits(x);
+    return x;
 }
 
-// The first two Sobol' dimensions: van der Corput (the index's bits reversed) and its partner
-// with direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1, i.e. the Pascal matrix mod 2 applied to
-// the reversed index. That matrix is the Kronecker power of [[1,0],[1,1]], so five masked
-// shift-xors apply it instead of a loop over the index's 32 bits.
+// Nested uniform (Owen) scramble of the bits of x, most significant first: each bit depends
+// only on the bits above it.
+constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
+    return reverseBits(laineKarras(reverseBits(x), seed));
+}
+
+// The Sobol' partner of van der Corput (direction numbers v_k = v_{k-1} ^ v_{k-1} >> 1) from the
+// van der Corput value x (the index's bits reversed): the Pascal matrix mod 2 applied to x. That
+// matrix is the Kronecker power of [[1,0],[1,1]], so five masked shift-xors apply it instead of
+// a loop over the index's 32 bits.
+constexpr uint32_t sobolPartner(uint32_t x) {
+    x ^= (x & 0x55555555U) << 1;
+    x ^= (x & 0x33333333U) << 2;
+    x ^= (x & 0x0F0F0F0FU) << 4;
+    x ^= (x & 0x00FF00FFU) << 8;
+    return x ^ ((x & 0x0000FFFFU) << 16);
+}
+
+// The first two Sobol' dimensions of point `index`.
 constexpr std::pair<uint32_t, uint32_t> sobol2D(uint32_t index) {
     const uint32_t x = reverseBits(index);
-    uint32_t y = x;
-    y ^= (y & 0x55555555U) << 1;
-    y ^= (y & 0x33333333U) << 2;
-    y ^= (y & 0x0F0F0F0FU) << 4;
-    y ^= (y & 0x00FF00FFU) << 8;
-    y ^= (y & 0x0000FFFFU) << 16;
-    return {x, y};
+    return {x, sobolPartner(x)};
 }
 
 // 24 bits, so the result is never rounded up to 1.
@@ -76,26 +84,34 @@ public:
     }
 
     PathSampler(uint32_t seedKey, uint32_t pixelIndex, uint32_t pass)
-        : m_pixelSeed(hashU32(pixelIndex ^ seedKey)), m_pass(pass) {}
+        : m_pixelSeed(hashU32(pixelIndex ^ seedKey)), m_reversedPass(reverseBits(pass)) {}
 
-    float next1D() { return unitFloat(nextPoint().first); }
+    float next1D() {
+        const uint32_t group = nextGroup(); // sets m_x: a statement of its own
+        return unitFloat(scrambled(group, 0x68E31DA4U, m_x));
+    }
     std::pair<float, float> next2D() {
-        const auto [x, y] = nextPoint();
-        return {unitFloat(x), unitFloat(y)};
+        const uint32_t group = nextGroup();
+        return {unitFloat(scrambled(group, 0x68E31DA4U, m_x)),
+                unitFloat(scrambled(group, 0xB5297A4DU, sobolPartner(m_x)))};
     }
 
 private:
-    std::pair<uint32_t, uint32_t> nextPoint() {
+    // The group's seed; sets m_x to the van der Corput value of the group's shuffled pass index,
+    // owenScramble(pass) reversed, which is laineKarras on the reversed pass: no reversal.
+    uint32_t nextGroup() {
         const uint32_t groupSeed = hashU32(m_pixelSeed + m_group++ * 0x9E3779B9U);
-        const uint32_t index = owenScramble(m_pass, hashU32(groupSeed ^ 0x5851F42DU));
-        const auto [x, y] = sobol2D(index);
-        return {owenScramble(x, hashU32(groupSeed ^ 0x68E31DA4U)),
-                owenScramble(y, hashU32(groupSeed ^ 0xB5297A4DU))};
+        m_x = laineKarras(m_reversedPass, hashU32(groupSeed ^ 0x5851F42DU));
+        return groupSeed;
+    }
+    static uint32_t scrambled(uint32_t groupSeed, uint32_t salt, uint32_t coordinate) {
+        return owenScramble(coordinate, hashU32(groupSeed ^ salt));
     }
 
     uint32_t m_pixelSeed;
-    uint32_t m_pass;
+    uint32_t m_reversedPass;
     uint32_t m_group = 0;
+    uint32_t m_x = 0;
 };
 
 } // namespace wavelit::util

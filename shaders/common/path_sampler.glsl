@@ -6,7 +6,7 @@
 
 struct PathSampler {
     uint pixelSeed;
-    uint pass;
+    uint reversedPass;
     uint group;
 };
 
@@ -19,50 +19,59 @@ uint psHash(uint x) {
     return x;
 }
 
-uint psOwenScramble(uint x, uint seed) {
-    x = bitfieldReverse(x);
+// util::laineKarras: on reversed bits, a nested uniform (Owen) scramble.
+uint psLaineKarras(uint x, uint seed) {
     x ^= x * 0x3d20adeau;
     x += seed;
     x *= (seed >> 16) | 1u;
     x ^= x * 0x05526c56u;
     x ^= x * 0x53a22864u;
-    return bitfieldReverse(x);
+    return x;
 }
 
-// util::sobol2D: van der Corput and the Pascal matrix mod 2 applied to it (five shift-xors).
-uvec2 psSobol2D(uint index) {
-    uint x = bitfieldReverse(index), y = x;
-    y ^= (y & 0x55555555u) << 1;
-    y ^= (y & 0x33333333u) << 2;
-    y ^= (y & 0x0F0F0F0Fu) << 4;
-    y ^= (y & 0x00FF00FFu) << 8;
-    y ^= (y & 0x0000FFFFu) << 16;
-    return uvec2(x, y);
+uint psOwenScramble(uint x, uint seed) {
+    return bitfieldReverse(psLaineKarras(bitfieldReverse(x), seed));
+}
+
+// util::sobolPartner: the Pascal matrix mod 2 applied to the van der Corput value.
+uint psSobolPartner(uint x) {
+    x ^= (x & 0x55555555u) << 1;
+    x ^= (x & 0x33333333u) << 2;
+    x ^= (x & 0x0F0F0F0Fu) << 4;
+    x ^= (x & 0x00FF00FFu) << 8;
+    return x ^ ((x & 0x0000FFFFu) << 16);
 }
 
 PathSampler psStart(uint seedKey, uint pixelIndex, uint pass) {
     PathSampler s;
     s.pixelSeed = psHash(pixelIndex ^ seedKey);
-    s.pass = pass;
+    s.reversedPass = bitfieldReverse(pass);
     s.group = 0u;
     return s;
 }
 
-uvec2 psNextPoint(inout PathSampler s) {
+// The group's seed; x = the van der Corput value of the group's shuffled pass index.
+uint psNextGroup(inout PathSampler s, out uint x) {
     uint groupSeed = psHash(s.pixelSeed + s.group * 0x9E3779B9u);
     s.group += 1u;
-    uint index = psOwenScramble(s.pass, psHash(groupSeed ^ 0x5851F42Du));
-    uvec2 p = psSobol2D(index);
-    return uvec2(psOwenScramble(p.x, psHash(groupSeed ^ 0x68E31DA4u)),
-                 psOwenScramble(p.y, psHash(groupSeed ^ 0xB5297A4Du)));
+    x = psLaineKarras(s.reversedPass, psHash(groupSeed ^ 0x5851F42Du));
+    return groupSeed;
 }
 
 // 24 bits, never rounded up to 1 (util::unitFloat).
 float psUnit(uint bits) { return float(bits >> 8) * (1.0 / 16777216.0); }
-float psNext1D(inout PathSampler s) { return psUnit(psNextPoint(s).x); }
+
+float psNext1D(inout PathSampler s) {
+    uint x;
+    uint groupSeed = psNextGroup(s, x);
+    return psUnit(psOwenScramble(x, psHash(groupSeed ^ 0x68E31DA4u)));
+}
+
 vec2 psNext2D(inout PathSampler s) {
-    uvec2 p = psNextPoint(s);
-    return vec2(psUnit(p.x), psUnit(p.y));
+    uint x;
+    uint groupSeed = psNextGroup(s, x);
+    return vec2(psUnit(psOwenScramble(x, psHash(groupSeed ^ 0x68E31DA4u))),
+                psUnit(psOwenScramble(psSobolPartner(x), psHash(groupSeed ^ 0xB5297A4Du))));
 }
 
 #endif
