@@ -2,8 +2,12 @@
 // Speed versus error at equal time (architecture.md §8): each sampler renders for the same wall time;
 // after passes 1, 2, 4, 8, ... and at the end the RMSE against the reference is recorded.
 // Writes DIR/bench.json, DIR/bench.csv, DIR/bench.png (log-log RMSE vs seconds) and
-// DIR/<sampler>.exr. Without --reference, a reference is rendered first with the `bsdf` sampler
-// for 8x the time (said so in bench.json: it carries that sampler's own noise).
+// DIR/<sampler>.exr. Without --reference, a reference is rendered first with the `mis` sampler
+// (env NEE + BSDF sampling, the best general-purpose estimator) for 8x the time (said so in
+// bench.json: it carries that sampler's own noise). Per sampler bench.json also holds the
+// per-sample and per-second figures that docs/performance-bench.md tabulates: relRMSE = RMSE /
+// the reference's mean, relRMSE^2 x spp (per-sample variance) and relRMSE^2 x seconds (inverse
+// efficiency: lower is better at equal time).
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/convergence_plot.h"
@@ -117,7 +121,7 @@ int runBench(const std::vector<std::string>& argv) {
                 " but the render is " + std::to_string(baseOptions->width) + "x" + std::to_string(baseOptions->height)));
     } else {
         render::RenderOptions refOptions = *baseOptions;
-        refOptions.sampler = render::SamplerKind::Bsdf;
+        refOptions.sampler = render::SamplerKind::Mis;
         refOptions.seed = baseOptions->seed + 0x5eed;
         auto session = render::RenderSession::create(*scene, refOptions);
         if (!session) return reportError(session.error());
@@ -127,7 +131,7 @@ int runBench(const std::vector<std::string>& argv) {
         auto img = (*session)->image();
         if (!img) return reportError(img.error());
         reference = std::move(img).value();
-        referenceSource = "rendered: bsdf sampler, " + std::to_string((*session)->samplesPerPixel()) + " spp";
+        referenceSource = "rendered: mis sampler, " + std::to_string((*session)->samplesPerPixel()) + " spp";
         if (auto w = scene::writeExr((dir / "reference.exr").string(), reference); !w) return reportError(w.error());
     }
 
@@ -165,6 +169,8 @@ int runBench(const std::vector<std::string>& argv) {
     report["width"] = baseOptions->width;
     report["height"] = baseOptions->height;
     report["seconds_per_sampler"] = *seconds;
+    const double referenceMean = render::meanValue(reference);
+    report["reference_mean"] = referenceMean;
     std::string csv = "sampler,seconds,spp,rmse\n";
     std::vector<Curve> curves;
     for (const auto& run : runs) {
@@ -175,7 +181,15 @@ int runBench(const std::vector<std::string>& argv) {
         } else {
             j["spp"] = run.samplesPerPixel;
             j["seconds"] = run.seconds;
-            j["final_rmse"] = run.points.empty() ? 0.0 : run.points.back().error;
+            const double finalRmse = run.points.empty() ? 0.0 : run.points.back().error;
+            j["final_rmse"] = finalRmse;
+            j["seconds_per_pass"] = run.samplesPerPixel ? run.seconds / run.samplesPerPixel : 0.0;
+            if (referenceMean > 0.0) {
+                const double rel2 = (finalRmse / referenceMean) * (finalRmse / referenceMean);
+                j["rel_rmse"] = finalRmse / referenceMean;
+                j["rel_mse_x_spp"] = rel2 * run.samplesPerPixel;
+                j["rel_mse_x_seconds"] = rel2 * run.seconds;
+            }
             for (size_t k = 0; k < run.points.size(); ++k) {
                 const CurvePoint& p = run.points[k];
                 j["curve"].push_back({{"seconds", p.seconds}, {"spp", run.pointSpp[k]}, {"rmse", p.error}});
