@@ -2,8 +2,9 @@
 # `wavelit-cli render --passes` and `wavelit-cli merge` contract (issue 17, docs/farm.md): parts
 # merge with exit 0; parts of different scenes or settings, overlapping pass ranges, and files
 # that are not Wavelit renders (another EXR, a corrupt or truncated one) are refused with exit 1
-# and a message naming the parts; bad usage exits 2. Image equality: partial_merge_test.cpp.
-# Renders are tiny (8x8, CPU, `mis`) so the whole script takes seconds.
+# and a message naming the parts; bad usage exits 2. Every setting the header records is covered
+# (width, sampler, seed, bounces, tracer; height is checked like width). Image equality:
+# partial_merge_test.cpp. Renders are tiny (8x8, `mis`) so the whole script takes seconds.
 # Usage: bash cli_merge_test.sh <wavelit-cli> <source-dir>
 set -u
 source "$(dirname "$0")/cli_expect.sh"
@@ -45,6 +46,10 @@ part seed.exr 3:2 --seed 4
 expect 1 "a.exr" "seed.exr" "different seed (3 vs 4)" -- merge "$tmp/a.exr" "$tmp/seed.exr" -o "$tmp/x.exr"
 part bounces.exr 3:2 --bounces 3
 expect 1 "a.exr" "bounces.exr" "different bounces (2 vs 3)" -- merge "$tmp/a.exr" "$tmp/bounces.exr" -o "$tmp/x.exr"
+# The CPU and Vulkan tracers draw the same numbers but round differently: not one render.
+WAVELIT_VK_VALIDATION=1 part tracer.exr 3:2 --device vulkan
+grep -q "validation" "$tmp/err" && fail "Vulkan validation messages: $(cat "$tmp/err")"
+expect 1 "a.exr" "tracer.exr" "different tracer (cpu vs vulkan)" -- merge "$tmp/a.exr" "$tmp/tracer.exr" -o "$tmp/x.exr"
 # Overlapping pass ranges, also through a merged file.
 part overlap.exr 2:2
 expect 1 "a.exr (passes 0:3)" "overlap.exr (passes 2:2)" "overlap in passes 2..2" -- \
