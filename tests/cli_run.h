@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 class TempScene {
 public:
     explicit TempScene(const std::string& name)
-        : m_dir(fs::temp_directory_path() / ("wavelit_" + name + "_" + std::to_string(::getpid()))) {
+        : m_dir(fs::temp_directory_path() /
+                ("wavelit_" + name + "_" + std::to_string(::getpid()))) {
         const fs::path resources(WAVELIT_RESOURCE_DIR);
         fs::remove_all(m_dir);
         fs::create_directories(m_dir / "envmaps");

@@ -49,7 +49,8 @@ util::Result<PassRange> parsePassRange(const std::string& flag, const std::strin
 
 PassRange shareOfPasses(PassRange all, int rank, int ranks) {
     const int base = all.count / ranks, extra = all.count % ranks;
-    return PassRange{all.first + rank * base + std::min(rank, extra), base + (rank < extra ? 1 : 0)};
+    return PassRange{all.first + rank * base + std::min(rank, extra),
+                     base + (rank < extra ? 1 : 0)};
 }
 
 std::string formatPassRanges(std::vector<PassRange> ranges) {
@@ -146,15 +147,19 @@ util::Result<RenderPart> readRenderPart(const std::string& path) {
         at = comma + 1;
     }
     if (std::to_string(part.passCount) != *find("passCount"))
-        return bad("wavelit:passCount " + *find("passCount") + " does not match wavelit:passes " + list);
+        return bad("wavelit:passCount " + *find("passCount") +
+                   " does not match wavelit:passes " + list);
     if (std::to_string(part.passes.front().first) != *find("firstPass"))
-        return bad("wavelit:firstPass " + *find("firstPass") + " does not match wavelit:passes " + list);
+        return bad("wavelit:firstPass " + *find("firstPass") +
+                   " does not match wavelit:passes " + list);
     scene::ImageLoadOptions load;
-    load.sanitize = false; // a render's radiance is finite and non-negative; anything else is damage
+    // A render's radiance is finite and non-negative: a texel that is not is damage, refused.
+    load.sanitize = false;
     auto image = scene::loadImage(path, load);
     if (!image) return image.error();
     part.mean = std::move(image->image);
-    const std::string size = std::to_string(part.mean.width) + "x" + std::to_string(part.mean.height);
+    const std::string size =
+        std::to_string(part.mean.width) + "x" + std::to_string(part.mean.height);
     if (size != *find("width") + "x" + *find("height"))
         return bad("the image is " + size + ", its attributes say " + *find("width") + "x" +
                    *find("height"));

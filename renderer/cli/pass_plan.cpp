@@ -21,7 +21,8 @@ util::Result<std::optional<PassRange>> fixedPasses(const Args& args, int spp, in
     if (args.has("--mpi")) {
         if (args.has("--time"))
             return makeError(ErrorKind::Usage, "",
-                             "--mpi needs a pass count (--spp N or --passes FIRST:COUNT), not --time");
+                             "--mpi needs a pass count (--spp N or --passes FIRST:COUNT), not "
+                             "--time");
         if (args.has("--trace-outliers") || args.has("--report"))
             return makeError(ErrorKind::Usage, "",
                              "--mpi does not take --trace-outliers or --report (they describe "

@@ -315,8 +315,8 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     const std::string ranks =
         mpi ? " over " + std::to_string(mpi->size()) + (mpi->size() == 1 ? " rank" : " ranks") : "";
     std::printf("wrote %s (%dx%d, %d spp, passes %s%s, %s, %.3f s per pass)\n", output->c_str(),
-                options.width, options.height, rendered[0].count, formatPassRanges(rendered).c_str(),
-                ranks.c_str(), stats.deviceName.c_str(),
+                options.width, options.height, rendered[0].count,
+                formatPassRanges(rendered).c_str(), ranks.c_str(), stats.deviceName.c_str(),
                 stats.samplesPerPixel ? stats.timings.passSeconds / stats.samplesPerPixel : 0.0);
     if (monitor) {
         std::vector<render::OutlierSample> outliers = monitor->outliers();

@@ -34,7 +34,8 @@ private:
     uint64_t m_hash = 0xcbf29ce484222325ULL;
 };
 
-// Paths are left out: the assets they load are hashed instead (hashAssets).
+// Paths are left out: the assets they load are hashed instead (hashMesh, and the environment
+// texels in sceneDigest).
 void hashEntity(Fnv1a& h, EntityKind kind, const void* entity) {
     for (const PropertyInfo& info : properties(kind)) {
         if (info.change == ChangeKind::Display || info.type == PropertyType::Path) continue;
