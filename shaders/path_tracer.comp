@@ -37,7 +37,7 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
 
 layout(push_constant) uniform Pass {
     uint seedKey; // util::PathSampler::seedKey(options.seed)
-    uint index;   // the pass, counted from 0 since the last reset
+    uint index;   // RenderOptions::firstPass + the passes since the last reset
 } pass;
 
 struct BvhNode {

@@ -8,6 +8,7 @@
 namespace wavelit::cli {
 
 int runRender(const std::vector<std::string>& args);   // render_command.cpp
+int runMerge(const std::vector<std::string>& args);    // merge_command.cpp
 int runValidate(const std::vector<std::string>& args); // validate_command.cpp
 int runWavelet(const std::vector<std::string>& args);  // wavelet_command.cpp
 int runBench(const std::vector<std::string>& args);    // bench_command.cpp

@@ -13,7 +13,8 @@ const char* kUsage =
     "commands:\n"
     "  render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]\n"
     "         [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan]\n"
-    "         [--report REPORT.json]\n"
+    "         [--report REPORT.json] [--also OUT2.exr|png] [--passes FIRST:COUNT] [--mpi]\n"
+    "  merge PART.exr [PART.exr ...] -o OUT.exr\n"
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
     "  validate FILE\n"
     "  wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]\n"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (command == "render") return wavelit::cli::runRender(rest);
+    if (command == "merge") return wavelit::cli::runMerge(rest);
     if (command == "validate") return wavelit::cli::runValidate(rest);
     if (command == "wavelet") return wavelit::cli::runWavelet(rest);
     if (command == "bench") return wavelit::cli::runBench(rest);

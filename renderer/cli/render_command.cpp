@@ -1,8 +1,10 @@
 // `wavelit-cli render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]
 //  [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan] [--report R.json]
-//  [--trace-outliers N --outliers OUT.json] [--also OUT2.exr|png]` (the outlier tracer:
-//  render/reference/outlier_tracer.h; --also writes the same image a second time, e.g. a PNG
-//  preview beside the EXR, without rendering it twice)
+//  [--trace-outliers N --outliers OUT.json] [--also OUT2.exr|png] [--passes FIRST:COUNT] [--mpi]`
+//  (the outlier tracer: render/reference/outlier_tracer.h; --also writes the same image a second
+//  time, e.g. a PNG preview beside the EXR, without rendering it twice; --passes renders passes
+//  FIRST..FIRST+COUNT-1 only, a part for `merge`; --mpi splits the passes over the ranks of an
+//  `mpirun` job: docs/farm.md). Every EXR carries the "wavelit:*" attributes of partial_render.h.
 // (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
 // is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
@@ -11,6 +13,9 @@
 // names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/mpi_job.h"
+#include "cli/partial_render.h"
+#include "cli/pass_plan.h"
 #include "cli/render_flags.h"
 #include "render/sampling/direction_sampler.h"
 #include "render/reference/outlier_tracer.h"
@@ -192,10 +197,11 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
 
 using util::lowerExtension;
 
-int run(const std::vector<std::string>& argv) {
+int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     std::set<std::string> flags = renderValueFlags();
-    flags.insert({"-o", "--also", "--spp", "--time", "--report", "--trace-outliers", "--outliers"});
-    auto args = Args::parse(argv, flags);
+    flags.insert({"-o", "--also", "--spp", "--time", "--report", "--trace-outliers", "--outliers",
+                  "--passes"});
+    auto args = Args::parse(argv, flags, {"--mpi"});
     if (!args)
         return reportError(args.error());
     if (args->positional().size() != 1)
@@ -225,6 +231,22 @@ int run(const std::vector<std::string>& argv) {
     // Usage errors in the shared render flags surface before the scene is loaded.
     if (auto early = renderOptionsFromArgs(*args, scene::RenderDefaults{}); !early)
         return reportError(early.error());
+    auto range = fixedPasses(*args, *spp, kMaxSpp, *output);
+    if (!range)
+        return reportError(range.error());
+    PassRange local = range->value_or(PassRange{});
+    if (args->has("--mpi")) {
+        auto job = MpiJob::start();
+        if (!job)
+            return reportError(job.error());
+        mpi = std::move(job).value();
+        local = shareOfPasses(**range, mpi->rank(), mpi->size());
+        if (local.count == 0)
+            return reportError(makeError(ErrorKind::Usage, "",
+                                         "--mpi: " + std::to_string((*range)->count) +
+                                             " passes for " + std::to_string(mpi->size()) +
+                                             " ranks: give each rank one pass at least"));
+    }
 
     const std::string scenePath = args->positional()[0];
     scene::LoadReport loadReport;
@@ -241,13 +263,14 @@ int run(const std::vector<std::string>& argv) {
     if (!parsed)
         return reportError(parsed.error());
     render::RenderOptions options = *parsed;
+    options.firstPass = local.first;
 
     util::Timer total;
     auto session = render::RenderSession::create(*scene, options);
     if (!session)
         return reportError(session.error());
     const bool timed = args->has("--time");
-    const int maxSpp = timed && !args->has("--spp") ? kMaxSpp : *spp;
+    const int maxSpp = *range ? local.count : timed && !args->has("--spp") ? kMaxSpp : *spp;
     util::Timer passes;
     // The outlier tracer (issue 20) reads the image after every pass: each pass's sample is the
     // running sum's increment, whatever the device.
@@ -269,20 +292,36 @@ int run(const std::vector<std::string>& argv) {
     auto image = (*session)->image();
     if (!image)
         return reportError(image.error());
+    render::RenderStats stats = (*session)->stats();
+    if (stats.validationMessages > 0)
+        std::fprintf(stderr, "warning: %d Vulkan validation messages\n", stats.validationMessages);
+    if (mpi) {
+        image = meanOverRanks(*mpi, *image, local.count, (*range)->count);
+        if (!image)
+            return reportError(image.error());
+        if (mpi->rank() != 0)
+            return 0; // rank 0 writes the file
+    }
+    const std::vector<PassRange> rendered{range->value_or(PassRange{0, stats.samplesPerPixel})};
+    const scene::ExrAttributes attributes =
+        renderAttributes(renderIdentity(*scene, scenePath, options, stats.deviceName), rendered);
     for (const std::string& path : {*output, also.value_or(*output)}) {
-        if (auto written = scene::writeImage(path, *image, scene->camera.exposureEv); !written)
+        if (auto written = scene::writeImage(path, *image, scene->camera.exposureEv, attributes);
+            !written)
             return reportError(written.error());
         if (!also)
             break;
     }
-    render::RenderStats stats = (*session)->stats();
-    std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s per pass)\n", output->c_str(), options.width,
-                options.height, stats.samplesPerPixel, stats.deviceName.c_str(),
+    const std::string ranks =
+        mpi ? " over " + std::to_string(mpi->size()) + (mpi->size() == 1 ? " rank" : " ranks") : "";
+    std::printf("wrote %s (%dx%d, %d spp, passes %s%s, %s, %.3f s per pass)\n", output->c_str(),
+                options.width, options.height, rendered[0].count,
+                formatPassRanges(rendered).c_str(), ranks.c_str(), stats.deviceName.c_str(),
                 stats.samplesPerPixel ? stats.timings.passSeconds / stats.samplesPerPixel : 0.0);
-    if (stats.validationMessages > 0)
-        std::fprintf(stderr, "warning: %d Vulkan validation messages\n", stats.validationMessages);
     if (monitor) {
-        const std::vector<render::OutlierSample> outliers = monitor->outliers();
+        std::vector<render::OutlierSample> outliers = monitor->outliers();
+        for (render::OutlierSample& o : outliers)
+            o.pass += options.firstPass; // the monitor counts this render's passes from 0
         auto paths = render::traceOutlierPaths(*scene, options, outliers);
         if (!paths)
             return reportError(paths.error());
@@ -308,7 +347,11 @@ int run(const std::vector<std::string>& argv) {
 } // namespace
 
 int runRender(const std::vector<std::string>& args) {
-    return run(args);
+    std::unique_ptr<MpiJob> mpi;
+    const int code = run(args, mpi);
+    if (code != 0 && mpi && mpi->size() > 1)
+        mpi->abort(code); // the other ranks may be waiting for this one's sums
+    return code;
 }
 
 } // namespace wavelit::cli

@@ -10,6 +10,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
 #include <ImfStdIO.h>
 #include <Iex.h>
 #include <zlib.h>
@@ -196,7 +197,8 @@ util::Result<LoadedImage> loadImage(const std::string& path, const ImageLoadOpti
     return guardLoad<LoadedImage>(path, [&] { return loadImageUnguarded(path, options); });
 }
 
-util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
+util::Status writeExr(const std::string& path, const util::ImageRGB& image,
+                      const ExrAttributes& attributes) {
     if (image.empty()) return makeError(ErrorKind::Invalid, path, "cannot write an empty image");
     // Encode in memory, then replace the file atomically (scene/atomic_file.h): a failed write
     // never leaves a truncated image where a good one was.
@@ -207,6 +209,8 @@ util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
         header.channels().insert("R", Imf::Channel(Imf::FLOAT));
         header.channels().insert("G", Imf::Channel(Imf::FLOAT));
         header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+        for (const auto& [name, text] : attributes)
+            header.insert(name, Imf::StringAttribute(text));
         {
             Imf::OutputFile file(stream, header);
             char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
@@ -222,6 +226,25 @@ util::Status writeExr(const std::string& path, const util::ImageRGB& image) {
     } catch (const std::exception& e) {
         return makeError(ErrorKind::Io, path, std::string("cannot encode EXR: ") + e.what());
     }
+}
+
+util::Result<ExrAttributes> readExrAttributes(const std::string& path) {
+    return guardLoad<ExrAttributes>(path, [&]() -> util::Result<ExrAttributes> {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec))
+            return makeError(ErrorKind::NotFound, path, "no such image file");
+        if (auto s = checkExrAttributeSizes(path); !s) return s.error();
+        try {
+            Imf::InputFile file(path.c_str());
+            ExrAttributes attributes;
+            for (auto i = file.header().begin(); i != file.header().end(); ++i)
+                if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&i.attribute()))
+                    attributes[i.name()] = text->value();
+            return attributes;
+        } catch (const std::exception& e) {
+            return makeError(ErrorKind::Format, path, std::string("cannot read EXR: ") + e.what());
+        }
+    });
 }
 
 util::Status writePng(const std::string& path, const util::ImageRGB& image, float exposureEv) {
@@ -256,9 +279,10 @@ util::Status writePng(const std::string& path, const util::ImageRGB& image, floa
     return writeFileAtomic(path, png);
 }
 
-util::Status writeImage(const std::string& path, const util::ImageRGB& image, float exposureEv) {
+util::Status writeImage(const std::string& path, const util::ImageRGB& image, float exposureEv,
+                        const ExrAttributes& attributes) {
     const std::string ext = lowerExtension(path);
-    if (ext == ".exr") return writeExr(path, image);
+    if (ext == ".exr") return writeExr(path, image, attributes);
     if (ext == ".png") return writePng(path, image, exposureEv);
     return makeError(ErrorKind::Usage, path, "output must end in .exr or .png");
 }

@@ -35,6 +35,24 @@ TEST(ImageIo, ExrRoundTripIsBitExactIncludingHugeValues) {
     EXPECT_TRUE(loaded->warnings.empty());
 }
 
+// A render's "wavelit:*" header attributes (docs/file-formats.md "Rendered EXR") come back as
+// written, beside OpenEXR's own attributes of other types, which are left out.
+TEST(ImageIo, ExrStringAttributesRoundTrip) {
+    const std::string path = (tempDir() / "attributes.exr").string();
+    const ExrAttributes written{{"wavelit:passes", "3:5"}, {"wavelit:scene", "a b/c.wlscene"}};
+    ASSERT_TRUE(writeExr(path, util::ImageRGB(2, 2), written).ok());
+    auto read = readExrAttributes(path);
+    ASSERT_TRUE(read.ok()) << read.error().message();
+    EXPECT_EQ(*read, written);
+    auto none = readExrAttributes((tempDir() / "nope.exr").string());
+    ASSERT_FALSE(none.ok());
+    EXPECT_NE(none.error().message().find("nope.exr"), std::string::npos);
+    std::ofstream(tempDir() / "text.exr") << "not an image";
+    auto text = readExrAttributes((tempDir() / "text.exr").string());
+    ASSERT_FALSE(text.ok());
+    EXPECT_NE(text.error().message().find("text.exr"), std::string::npos);
+}
+
 TEST(ImageIo, NonFiniteAndNegativeTexelsAreSanitisedWithAWarningOrRejected) {
     util::ImageRGB image(2, 2, glm::vec3(1.0f));
     image.at(0, 0).r = std::numeric_limits<float>::quiet_NaN();

@@ -10,7 +10,8 @@
 namespace wavelit::render::gpu_tracer {
 
 util::Status GpuPathTracer::renderPass() {
-    const PassPush push{util::PathSampler::seedKey(m_options.seed), uint32_t(m_passes)};
+    const PassPush push{util::PathSampler::seedKey(m_options.seed),
+                        uint32_t(m_options.firstPass + m_passes)};
     const PassTiles tiles = passTiles();
     // Until a piece has been timed, a small first piece: 4 tiles (1024 pixels) take ~45 ms with
     // `wavelet` on lavapipe under load (a 1600x1000 pass took 71 s), the slowest sampler but the

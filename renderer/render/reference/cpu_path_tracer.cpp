@@ -243,7 +243,7 @@ util::Status CpuPathTracer::renderPass() {
     const int w = m_options.width, h = m_options.height;
     const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
     const int tiles = tilesX * tilesY;
-    const int pass = m_passes;
+    const int pass = m_options.firstPass + m_passes;
     std::atomic<int> next{0};
     // Workers write disjoint pixels of m_sum: no locking.
     auto worker = [&] {

@@ -27,6 +27,10 @@ struct RenderOptions {
     int height = 512;
     int bounces = 4;     // scattering events per path (1 = direct lighting only)
     uint64_t seed = 1;
+    // The index of the first pass after a reset: pass k of this render draws the random numbers
+    // of pass firstPass + k (docs/estimator.md "Random numbers"), so renders of disjoint pass
+    // ranges are parts of one longer render (`wavelit-cli render --passes`, docs/farm.md).
+    int firstPass = 0;
     DeviceChoice device = DeviceChoice::Auto;
     SamplerKind sampler = SamplerKind::Bsdf;
     // Vulkan physical device: index or case-insensitive name substring; empty = prefer a hardware
