@@ -33,8 +33,12 @@
 #include "common/sampling.glsl"
 #include "sampling/sampler_environment.glsl"
 #include "sampling/env_exact.glsl"
+// The product kinds' code (private pyramid, descents) only where the pipeline draws from a
+// product: on lavapipe its mere presence cost the `mis` kernel ~40% of its pass (issue 12).
+#ifdef WAVELIT_PRODUCT_SAMPLER
 #include "sampling/product/env_product_sampler.glsl"
 #include "sampling/oracle_sampler.glsl"
+#endif
 
 // Codes of render::SamplerKind (render_options.h) and of SamplerMaterial.mode (gpu_sampler_data.h).
 const uint kSamplerUniform = WAVELIT_SAMPLER_UNIFORM;
@@ -107,6 +111,7 @@ double dsBsdfLobeMoment(DirSampler s, SamplerGlobals g) {
 
 // --- set-up, sampling, pdf ------------------------------------------------------------------
 
+#ifdef WAVELIT_PRODUCT_SAMPLER
 // The wavelet's product for a hit: the window and env factor of the axis's bin.
 float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int envLevel) {
     uint factor;
@@ -115,6 +120,7 @@ float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int
     s.refineLevels = dsRefineLevels(sm, s.k + s.m, envLevel);
     return dsBuildProduct(s, sm, factor);
 }
+#endif
 
 DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
                    vec3 baseColor, float roughness) {
@@ -168,8 +174,10 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     bool product = false;
     double lobeMoment = 0.0LF;
     float total = 0.0;
+#ifdef WAVELIT_PRODUCT_SAMPLER
     if (sm.mode == kModeProduct) total = dsSetupWavelet(s, sm, axisLocal, g.envLevel);
     else if (sm.mode == kModeOracle) total = dsSetupOracle(s, sm, axisLocal, g.envLevel, g.envMean);
+#endif
     if (sm.mode == kModeProduct || sm.mode == kModeOracle) {
         product = total > 0.0;
         if (product) {
@@ -197,19 +205,26 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
 }
 
 // The mixture's solid-angle pdf at world direction wi whose octahedral point (env-local) is p.
-float dsMixturePdf(DirSampler s, vec3 wi, dvec2 p) {
+// productDensity >= 0: the product technique's density at p per unit square area, already known
+// (the draw that produced p walked the product's descent and multiplied the same shares a pdf
+// walk would: re-walking it would repeat the lobe refinement's BRDF evaluations); < 0: walk it.
+float dsMixturePdf(DirSampler s, vec3 wi, dvec2 p, double productDensity) {
     vec3 local = frameToLocal(s.frame, wi);
     double pdf = 0.0LF;
     if (s.cUniform > 0.0) pdf += double(s.cUniform) * (local.z > 0.0 ? double(0.5 * kInvPi) : 0.0LF);
     if (s.cCosine > 0.0) pdf += double(s.cCosine) * double(cosineHemispherePdf(local));
     if (s.cBsdf > 0.0) pdf += double(s.cBsdf) * double(brdfPdf(s.brdfType, s.roughness, s.wo, local));
     if (s.cEnv > 0.0) pdf += double(s.cEnv) * envExactPdf(s.exactOffset, wi, s.cosSinYaw);
-    if (s.cProduct > 0.0) pdf += double(s.cProduct) * dsProductPdf(s, p) / double(kFourPi);
+#ifdef WAVELIT_PRODUCT_SAMPLER
+    if (s.cProduct > 0.0)
+        pdf += double(s.cProduct) *
+               (productDensity >= 0.0LF ? productDensity : dsProductPdf(s, p)) / double(kFourPi);
+#endif
     return float(pdf);
 }
 
 float dsPdf(DirSampler s, vec3 wi) {
-    return dsMixturePdf(s, wi, dvec2(octToSquare(envToLocal(s.cosSinYaw, wi))));
+    return dsMixturePdf(s, wi, dvec2(octToSquare(envToLocal(s.cosSinYaw, wi))), -1.0LF);
 }
 
 // u3 picks the technique (in the CPU's order: product, bsdf, env), u1 and u2 drive it.
@@ -229,11 +244,14 @@ bool dsSample(DirSampler s, float u1, float u2, float u3, out vec3 wi, out float
     }
     bool tabulated = false, exact = false;
     dvec2 p = dvec2(0.0LF);
-    double density;
+    double density = -1.0LF; // the product's, when it drew p
+#ifdef WAVELIT_PRODUCT_SAMPLER
     if (s.cProduct > 0.0 && u3 < s.cProduct) {
         p = dsSampleProduct(s, dvec2(u1, u2), density);
         tabulated = true;
-    } else if (s.cEnv > 0.0 && (s.cBsdf == 0.0 || u3 >= s.cProduct + s.cBsdf)) {
+    }
+#endif
+    if (!tabulated && s.cEnv > 0.0 && (s.cBsdf == 0.0 || u3 >= s.cProduct + s.cBsdf)) {
         // The exact env technique: its pdf is read at the float direction, as the radiance is;
         // the product's at that direction's square point.
         vec3 local = envExactSample(s.exactOffset, dvec2(u1, u2));
@@ -244,7 +262,7 @@ bool dsSample(DirSampler s, float u1, float u2, float u3, out vec3 wi, out float
     // One call site of dsMixturePdf (it inlines the product's pdf).
     if (exact || tabulated) {
         if (!exact) wi = envToWorld(s.cosSinYaw, octToDirection(vec2(p)));
-        pdf = dsMixturePdf(s, wi, p);
+        pdf = dsMixturePdf(s, wi, p, density);
     } else {
         vec3 local, f;
         float bsdfPdf;

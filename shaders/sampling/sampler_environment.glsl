@@ -76,13 +76,11 @@ int envFindNode(int l, int x, int y, out int reached) {
     return node;
 }
 
-// The table's descent below cell (l, x, y), drawing by u or following point p (takeShare): row
-// by u.y, then column by u.x given the row. Returns the probability of the leaf reached within
-// the cell and leaves (l, x, y) at that leaf; where the tree is constant above the cell, the cell
-// itself (probability 1).
-double envDescend(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout int x, inout int y) {
-    int reached;
-    int node = envFindNode(l, x, y, reached);
+// envDescend (below) from a known node: `node` (at level `reached`) is cell (l, x, y)'s, or its deepest
+// ancestor where the tree is constant above it (envFindNode's answer; a descent that walked down
+// to the cell carries it instead of walking again from the root).
+double envDescendFrom(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout int x, inout int y,
+                      int node, int reached) {
     double probability = 1.0LF;
     if (reached < l) return probability;
     while (envNodes[node].firstChild >= 0) {
@@ -98,6 +96,16 @@ double envDescend(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout int x
         y = 2 * y + cy;
     }
     return probability;
+}
+
+// The table's descent below cell (l, x, y), drawing by u or following point p (takeShare): row
+// by u.y, then column by u.x given the row. Returns the probability of the leaf reached within
+// the cell and leaves (l, x, y) at that leaf; where the tree is constant above the cell, the cell
+// itself (probability 1).
+double envDescend(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout int x, inout int y) {
+    int reached;
+    int node = envFindNode(l, x, y, reached);
+    return envDescendFrom(drawing, u, p, l, x, y, node, reached);
 }
 
 // Draws a point inside cell (l, x, y) from the table's conditional distribution there;

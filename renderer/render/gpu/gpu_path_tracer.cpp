@@ -72,7 +72,11 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     // `bsdf` compiles without the samplers: no private product pyramid, no doubles.
     if (pt->usesDirectionSamplers())
         compile.defines.push_back("WAVELIT_DIRECTION_SAMPLERS=1");
-    // Only the oracle needs the larger private pyramid (2^5 leaves instead of 2^4).
+    // The product code (private pyramid, descents) only for the kinds that draw from a product:
+    // carried as dead code it cost `mis` ~40% of a lavapipe pass (docs/performance.md, issue 12).
+    if (options.sampler == SamplerKind::Wavelet || options.sampler == SamplerKind::Oracle)
+        compile.defines.push_back("WAVELIT_PRODUCT_SAMPLER=1");
+    // Only the oracle needs the larger private pyramid (2^5 leaves instead of the wavelet's).
     if (options.sampler == SamplerKind::Oracle)
         compile.defines.push_back("WAVELIT_ORACLE_SAMPLER=1");
     // The samplers' constants and table layouts, generated from the C++ ones.

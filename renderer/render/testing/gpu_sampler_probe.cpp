@@ -32,7 +32,7 @@ std::string kernelSource(SamplerKind kind) {
     return std::string(R"(#version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-)") + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
+)") + "#define WAVELIT_PRODUCT_SAMPLER 1\n" + (oracle ? "#define WAVELIT_ORACLE_SAMPLER 1\n" : "") + R"(
 layout(local_size_x = 64) in;
 #include "sampling/sampler_structs.glsl"
 layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };

@@ -14,8 +14,6 @@
 #include "sampling/sampler_environment.glsl"
 #include "sampling/product/env_product_tables.glsl"
 
-const float kFourPi = 4.0 * kPi;
-
 // The product pyramid of one hit: masses of levels 0..m at offsets (4^l - 1) / 3, and while it is
 // decoded, the env factor's node of each cell of levels 0..m-1. The oracle's (oracle_sampler.glsl)
 // is finer, WAVELIT_ORACLE_LEVEL; only its pipeline defines WAVELIT_ORACLE_SAMPLER.
@@ -59,6 +57,33 @@ float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
     return float(weight > 0.0LF ? weighted / weight : 0.25LF * plain);
 }
 
+// dsEnvWeightedBrdfCos for the wavelet's leaves, cheaper and equal up to rounding: the BRDF x cos
+// first, and the env's split of the cell only where some sub-cell centre sees f cos > 0 (a leaf
+// wholly below the horizon is 0 either way: about half of a whole-sphere window's leaves); the split
+// from the cell's node alone, since the cell's mass cancels in the weighted mean (its walk from the
+// root multiplied two decoded splits per level; the env is floored above 0, so the mass is never 0).
+float dsLeafBrdfCos(DirSampler s, int l, int x, int y) {
+    double side = 1.0LF / double(1 << (l + 1));
+    double f[4];
+    bool lit = false;
+    for (int c = 0; c < 4; ++c) {
+        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
+        f[c] = double(dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre)))));
+        lit = lit || f[c] > 0.0LF;
+    }
+    if (!lit) return 0.0;
+    int reached;
+    int node = envFindNode(l, x, y, reached);
+    double w[4] = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
+    if (reached == l) envChildShares(node, w);
+    double weighted = 0.0LF, weight = 0.0LF;
+    for (int c = 0; c < 4; ++c) {
+        weighted += w[c] * f[c];
+        weight += w[c];
+    }
+    return float(weighted / weight);
+}
+
 // Decodes the env factor `factor` (truncated Haar, SparseHaar's tree) to scaling coefficients at
 // level m (haar.h's synthesis), multiplies each cell's average by the env-weighted BRDF x cos over
 // its sub-cells, and sums the masses up. Returns the total mass (0: nothing to sample).
@@ -96,9 +121,7 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
         for (int x = 0; x < side; ++x) {
             float e = max(0.0, gMass[off + y * side + x] * float(side));
             int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
-            double sub[4];
-            if (e > 0.0) envSubCellMasses(s.k + m, gx, gy, sub);
-            gMass[off + y * side + x] = e > 0.0 ? e * dsEnvWeightedBrdfCos(s, s.k + m, gx, gy, sub) : 0.0;
+            gMass[off + y * side + x] = e > 0.0 ? e * dsLeafBrdfCos(s, s.k + m, gx, gy) : 0.0;
         }
     return dsSumPyramid(m);
 }
@@ -125,9 +148,8 @@ void dsChildProbabilities(int l, int x, int y, out double pRow[2], out double pC
 // are weighted by the env's own split of the cell (its quadtree's conditional probabilities)
 // times BRDF x cos at the child's centre, plus WAVELIT_LOBE_FLOOR of the largest so no child with
 // env light loses support. The weights depend only on the cell, so the pdf's walk is exact.
-void dsRefineWeights(DirSampler s, int l, int x, int y, out double w[4]) {
-    int reached;
-    int node = envFindNode(l, x, y, reached);
+// `node`, `reached`: envFindNode's answer for the cell.
+void dsRefineWeights(DirSampler s, int l, int x, int y, int node, int reached, out double w[4]) {
     w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
     if (reached == l) envChildShares(node, w);
     double side = 1.0LF / double(1 << (l + 1));
@@ -183,19 +205,26 @@ double dsDescendProduct(DirSampler s, bool drawing, inout dvec2 u, dvec2 p, out 
     x += s.ox << shift;
     y += s.oy << shift;
     if (!drawing && !(probability > 0.0LF)) return 0.0LF; // p is where nothing is drawn
+    // The env tree's node of the cell, carried down the refinement (one walk from the root).
+    int reached;
+    int node = envFindNode(l, x, y, reached);
     for (int r = 0; r < s.refineLevels; ++r) {
         double w[4], p0, p1;
-        dsRefineWeights(s, l, x, y, w);
+        dsRefineWeights(s, l, x, y, node, reached, w);
         dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
         int cy = takeShare(drawing, p0, p1, childHolding(drawing, p.y, l, y), u.y, probability);
         dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
         int cx = takeShare(drawing, p0, p1, childHolding(drawing, p.x, l, x), u.x, probability);
+        if (reached == l && envNodes[node].firstChild >= 0) {
+            node = envNodes[node].firstChild + cx + 2 * cy;
+            reached = l + 1;
+        }
         l += 1;
         x = 2 * x + cx;
         y = 2 * y + cy;
     }
     if (!drawing && !(probability > 0.0LF)) return 0.0LF;
-    return probability * envDescend(drawing, u, p, l, x, y);
+    return probability * envDescendFrom(drawing, u, p, l, x, y, node, reached);
 }
 
 // A point of the octahedral square from the product; `density` per unit square area.
