@@ -16,7 +16,7 @@ echo "run: no display; rendering $scene headless"
 # The default sampler (wavelet) on the default device (Vulkan: lavapipe without a GPU), for a
 # fixed time (WAVELIT_SPP=N renders N passes instead); one render writes the EXR and the PNG.
 if [ -n "${WAVELIT_SPP:-}" ]; then budget=(--spp "$WAVELIT_SPP"); else
-    budget=(--time "${WAVELIT_RENDER_SECONDS:-15}"); fi
+    budget=(--time "${WAVELIT_RENDER_SECONDS:-10}"); fi
 build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr \
     --also out/ring_on_ground.png "${budget[@]}" --report out/ring_on_ground_report.json "$@"
 # Speed vs error: every sampler at equal time on the default device against a longer reference
