@@ -36,7 +36,9 @@ def main():
         "Written by `scripts/bench.sh` (do not edit by hand): every sampler renders each scene for "
         f"the same {seconds} s on each device; errors are against a `mis` render of the CPU tracer for "
         f"12x that time (its own error is included in every figure). Commit {git_head()}, "
-        f"{datetime.date.today().isoformat()}, {os.cpu_count()} CPU threads, {platform.machine()}.",
+        f"{datetime.date.today().isoformat()}, {os.cpu_count()} CPU threads, {platform.machine()}, "
+        f"load average {os.getloadavg()[0]:.1f} when the tables were written (above the thread "
+        "count, other work shared the machine: compare rows with each other, not with other runs).",
         "",
         "relRMSE = RMS over pixels and channels of (image − reference) / the reference's mean; "
         "relRMSE² × spp is the per-sample variance (lower is better per sample); relRMSE² × s is "
