@@ -47,11 +47,7 @@ std::shared_ptr<scene::Scene> makeLightScene() {
     scene::Object ground;
     ground.id = 3;
     ground.materialId = 1;
-    auto mesh = std::make_shared<scene::TriangleMesh>();
-    const float h = 10.0f;
-    mesh->positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    mesh->indices = {0, 2, 1, 0, 3, 2};
-    ground.mesh = mesh;
+    ground.mesh = std::make_shared<scene::TriangleMesh>(makeGroundQuad(10.0f));
     s->objects.push_back(ground);
     scene::Object ball;
     ball.id = 4;

@@ -30,6 +30,14 @@ scene::TriangleMesh makeUvSphere(int segments, int rings) {
     return mesh;
 }
 
+scene::TriangleMesh makeGroundQuad(float halfSize) {
+    const float h = halfSize;
+    scene::TriangleMesh mesh;
+    mesh.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+    mesh.indices = {0, 2, 1, 0, 3, 2};
+    return mesh;
+}
+
 std::shared_ptr<scene::Scene> makeFurnaceScene(const scene::Material& material,
                                                const glm::vec3& environment, int segments,
                                                int rings) {
@@ -73,11 +81,7 @@ std::shared_ptr<scene::Scene> makePlaneScene(const scene::Material& material) {
     scene::Object o;
     o.id = 2;
     o.materialId = 1;
-    auto mesh = std::make_shared<scene::TriangleMesh>();
-    const float h = 20.0f;
-    mesh->positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    mesh->indices = {0, 2, 1, 0, 3, 2};
-    o.mesh = mesh;
+    o.mesh = std::make_shared<scene::TriangleMesh>(makeGroundQuad(20.0f));
     s->objects.push_back(o);
     s->lighting.environment.intensity = 0.0f; // black: only the analytic lights
     return s;

@@ -16,6 +16,10 @@ namespace wavelit::render {
 // (counter-clockwise seen from outside) and smooth normals (= positions).
 scene::TriangleMesh makeUvSphere(int segments, int rings);
 
+// The square y = 0, |x|, |z| <= halfSize, as two triangles (no vertex normals: the shading
+// normal is the geometric one).
+scene::TriangleMesh makeGroundQuad(float halfSize);
+
 // One unit sphere with `material`, a constant environment of radiance `environment`, camera at
 // (0, 0, 4) looking at the origin with a 40° vertical field of view (the sphere fills ~70% of
 // the image height).
