@@ -87,22 +87,25 @@ public:
         : m_pixelSeed(hashU32(pixelIndex ^ seedKey)), m_reversedPass(reverseBits(pass)) {}
 
     float next1D() {
-        const uint32_t group = nextGroup(); // sets m_x: a statement of its own
-        return unitFloat(scrambled(group, 0x68E31DA4U, m_x));
+        const Group g = nextGroup();
+        return unitFloat(scrambled(g.seed, 0x68E31DA4U, g.x));
     }
     std::pair<float, float> next2D() {
-        const uint32_t group = nextGroup();
-        return {unitFloat(scrambled(group, 0x68E31DA4U, m_x)),
-                unitFloat(scrambled(group, 0xB5297A4DU, sobolPartner(m_x)))};
+        const Group g = nextGroup();
+        return {unitFloat(scrambled(g.seed, 0x68E31DA4U, g.x)),
+                unitFloat(scrambled(g.seed, 0xB5297A4DU, sobolPartner(g.x)))};
     }
 
 private:
-    // The group's seed; sets m_x to the van der Corput value of the group's shuffled pass index,
-    // owenScramble(pass) reversed, which is laineKarras on the reversed pass: no reversal.
-    uint32_t nextGroup() {
-        const uint32_t groupSeed = hashU32(m_pixelSeed + m_group++ * 0x9E3779B9U);
-        m_x = laineKarras(m_reversedPass, hashU32(groupSeed ^ 0x5851F42DU));
-        return groupSeed;
+    // A draw group: its seed and x, the van der Corput value of its shuffled pass index.
+    struct Group {
+        uint32_t seed;
+        uint32_t x;
+    };
+    // x = owenScramble(pass) reversed, which is laineKarras on the reversed pass: no reversal.
+    Group nextGroup() {
+        const uint32_t seed = hashU32(m_pixelSeed + m_group++ * 0x9E3779B9U);
+        return {seed, laineKarras(m_reversedPass, hashU32(seed ^ 0x5851F42DU))};
     }
     static uint32_t scrambled(uint32_t groupSeed, uint32_t salt, uint32_t coordinate) {
         return owenScramble(coordinate, hashU32(groupSeed ^ salt));
@@ -111,7 +114,6 @@ private:
     uint32_t m_pixelSeed;
     uint32_t m_reversedPass;
     uint32_t m_group = 0;
-    uint32_t m_x = 0;
 };
 
 } // namespace wavelit::util
