@@ -209,8 +209,11 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     auto output = args->value("-o");
     if (!output)
         return reportError(makeError(ErrorKind::Usage, "", "render needs -o OUT.exr|png"));
-    const auto also = args->value("--also");
-    for (const std::string& path : {*output, also.value_or(*output)}) {
+    // -o, then --also: the files the one rendered image is written to.
+    std::vector<std::string> outputs{*output};
+    if (auto also = args->value("--also"))
+        outputs.push_back(*also);
+    for (const std::string& path : outputs) {
         const std::string ext = lowerExtension(path);
         if (ext != ".exr" && ext != ".png")
             return reportError(
@@ -305,13 +308,10 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     const std::vector<PassRange> rendered{range->value_or(PassRange{0, stats.samplesPerPixel})};
     const scene::ExrAttributes attributes =
         renderAttributes(renderIdentity(*scene, scenePath, options, stats.deviceName), rendered);
-    for (const std::string& path : {*output, also.value_or(*output)}) {
+    for (const std::string& path : outputs)
         if (auto written = scene::writeImage(path, *image, scene->camera.exposureEv, attributes);
             !written)
             return reportError(written.error());
-        if (!also)
-            break;
-    }
     const std::string ranks =
         mpi ? " over " + std::to_string(mpi->size()) + (mpi->size() == 1 ? " rank" : " ranks") : "";
     std::printf("wrote %s (%dx%d, %d spp, passes %s%s, %s, %.3f s per pass)\n", output->c_str(),
