@@ -230,7 +230,10 @@ void main() {
         vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         SamplerGlobals globals;
-        globals.kind = kind == kSamplerMis ? kSamplerEnv : kind; // mis's NEE: the env alone
+        // mis's NEE: the env alone; wavelet's too past its product vertices (vertexSamplerKind).
+        bool envAloneHere = kind == kSamplerMis ||
+                            (kind == kSamplerWavelet && depth >= uint(WAVELIT_WAVELET_PRODUCT_VERTICES));
+        globals.kind = envAloneHere ? kSamplerEnv : kind;
         globals.lit = params.samplerInfo.y != 0u;
         globals.tailOffset = params.samplerInfo.z;
         globals.envLevel = int(params.samplerInfo.w);

@@ -114,6 +114,22 @@ double dsBsdfLobeMoment(DirSampler s, SamplerGlobals g) {
 #ifdef WAVELIT_PRODUCT_SAMPLER
 // The wavelet's product for a hit: the window and env factor of the axis's bin.
 float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int envLevel) {
+    if (sm.precomputedBins > 0u && (sm.aroundNormal != 0u || s.wo.z >= WAVELIT_MIRROR_TABLE_MIN_COS)) {
+        // The axis bin's precomputed pyramid and window (render/gpu/precomputed_products.h): no
+        // per-hit product.
+        int bins = int(sm.precomputedBins);
+        vec2 q = octToSquare(axisLocal);
+        int bx = min(int(q.x * float(bins)), bins - 1), by = min(int(q.y * float(bins)), bins - 1);
+        s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
+        uint at = sm.precomputedOffset +
+                  uint((by * bins + bx) * (WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS + pyramidOffset(s.m + 1)));
+        s.k = int(samplerWords[at]);
+        s.ox = int(samplerWords[at + 1u]);
+        s.oy = int(samplerWords[at + 2u]);
+        s.massOffset = int(at) + WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS;
+        s.refineLevels = dsRefineLevels(sm, s.k + s.m, envLevel);
+        return dsMass(s, 0);
+    }
     uint factor;
     flatBinOf(sm, axisLocal, s.k, s.ox, s.oy, factor);
     s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
@@ -135,6 +151,7 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
     s.oy = 0;
     s.m = 0;
     s.refineLevels = 0;
+    s.massOffset = -1;
     s.frame = frame;
     s.wo = wo;
     s.brdfType = brdfType;

@@ -1,5 +1,7 @@
 #include "render/gpu/gpu_sampler_data.h"
 
+#include "render/gpu/precomputed_products.h"
+
 #include "render/sampling/oracle_sampler.h"
 #include "render/sampling/sampler_constants.h"
 
@@ -81,6 +83,14 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             g.scalingOffset = uint32_t(d.words.size());
             for (float s : flat.scaling)
                 d.words.push_back(std::bit_cast<uint32_t>(s));
+            if (d.lit) {
+                const int m = std::min(policy.productLevel, kGpuMaxProductLevel);
+                const std::vector<uint32_t> bins =
+                    buildPrecomputedProducts(env, t.material(size_t(index)), m, *product);
+                g.precomputedOffset = uint32_t(d.words.size());
+                g.precomputedBins = 1u << axisBinLevel(*product);
+                d.words.insert(d.words.end(), bins.begin(), bins.end());
+            }
         }
         d.tailOffset = uint32_t(d.words.size());
         const int side = 1 << kTailLevel;

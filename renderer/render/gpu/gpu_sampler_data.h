@@ -9,6 +9,8 @@
 //              tailOffset + 4^kTailLevel (EquirectEnvSampler: width, height, its marginal CDF,
 //              row solid angles and conditional CDFs, doubles as two words, low first;
 //              sampling/env_exact.glsl)
+//              A `wavelet` material in product mode also has its axis bins' precomputed product
+//              pyramids there (precomputed_products.h), after its flat tables.
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).
 #pragma once
 
@@ -53,7 +55,9 @@ struct GpuSamplerMaterial {
     uint32_t aroundNormal = 0;  // 1: the product's axis is the normal (Lambert)
     uint32_t refineMaxLevels = 0;   // lobe refinement below the product's leaves (the policy's)
     float refineCellAngle = 0.0f;   // radians; 0: none
-    uint32_t pad[3] = {0, 0, 0};
+    uint32_t precomputedOffset = 0; // word offset of its axis bins' pyramids
+    uint32_t precomputedBins = 0;   // axis bins per side (precomputed_products.h); 0: none
+    uint32_t pad = 0;
 };
 static_assert(sizeof(GpuSamplerMaterial) == 48);
 static_assert(sizeof(wavelet::HierarchicalSampler::TableNode) == 16);

@@ -1,6 +1,7 @@
 #include "render/gpu/sampler_shader_defines.h"
 
 #include "render/gpu/gpu_sampler_data.h"
+#include "render/gpu/precomputed_products.h"
 #include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_window.h"
@@ -60,6 +61,9 @@ std::vector<std::string> samplerShaderDefines() {
         defineUint("MODE_ORACLE", kGpuSamplerOracle),
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
+        define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
+        define("MIRROR_TABLE_MIN_COS", floatLiteral(kMirrorTableMinCos)),
+        define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),
         define("ORACLE_MIN_ENV_SHARE", doubleLiteral(kOracleMinEnvShare)),
         define("MAX_ENV_SHARE", doubleLiteral(kMaxEnvShare)),

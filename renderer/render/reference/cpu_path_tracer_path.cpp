@@ -119,7 +119,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
         std::optional<DirectionSampler> ds;
         if (m_samplerTables && mat.samplerIndex >= 0 &&
             (continuationFromSampler(kind) || (envNee && lit)))
-            ds.emplace(*m_samplerTables, vertexSamplerKind(kind),
+            ds.emplace(*m_samplerTables, vertexSamplerKind(kind, depth),
                        ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
         const DirectionSampler* sampler = ds && continuationFromSampler(kind) ? &*ds : nullptr;
         const DirectionSampler* neeSampler = ds && envNee ? &*ds : nullptr;

@@ -28,8 +28,12 @@ bool continuationFromSampler(SamplerKind kind) {
     return kind == SamplerKind::Uniform || kind == SamplerKind::Cosine;
 }
 
-SamplerKind vertexSamplerKind(SamplerKind kind) {
-    return kind == SamplerKind::Mis ? SamplerKind::Env : kind;
+SamplerKind vertexSamplerKind(SamplerKind kind, int depth) {
+    if (kind == SamplerKind::Mis)
+        return SamplerKind::Env;
+    if (kind == SamplerKind::Wavelet && depth >= kWaveletProductVertices)
+        return SamplerKind::Env;
+    return kind;
 }
 
 DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,

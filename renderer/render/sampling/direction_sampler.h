@@ -66,8 +66,10 @@ std::vector<SamplerKind> allSamplerKinds();
 bool samplerHasEnvNee(SamplerKind kind);
 // The continuation is drawn by a DirectionSampler (uniform, cosine), not by the plugin.
 bool continuationFromSampler(SamplerKind kind);
-// The kind a vertex's DirectionSampler is built with: `mis`'s NEE draws from `env` alone.
-SamplerKind vertexSamplerKind(SamplerKind kind);
+// The kind the DirectionSampler of a path's scattering vertex `depth` (0: the camera ray's hit) is
+// built with: `mis`'s NEE draws from `env` alone, and so does `wavelet`'s from vertex
+// kWaveletProductVertices on (sampler_constants.h).
+SamplerKind vertexSamplerKind(SamplerKind kind, int depth);
 
 // The shading configuration: an orthonormal frame (n = shading normal, t, b tangents; the BRDF's
 // local frame is (t, b, n)), the direction toward the viewer, and the material's index in the

@@ -28,6 +28,12 @@ inline constexpr double kMaxEnvShare = 0.8;
 inline constexpr double kWaveletBsdfShare = 0.1;
 // (The `oracle`'s, kOracleBsdfShare, is in oracle_sampler.h; both tracers read it there.)
 
+// `wavelet` builds its per-hit product at the first kWaveletProductVertices scattering vertices of
+// a path; deeper vertices estimate direct env light as `mis` does (env NEE, BSDF continuation,
+// MIS). The product is most of a pass's cost (docs/performance.md "Wavelet pass cost") and pays
+// most where a path's throughput is still 1: at the camera's vertex.
+inline constexpr int kWaveletProductVertices = 1;
+
 // The share rule's moment estimates: the lobe's without a product from kLobeStrata^2 stratified
 // BSDF draws; the tail's on the env's 2^kTailLevel square cells (64 BRDF evaluations; 16^2 changed
 // no share in the variance study and costs 4x).

@@ -75,7 +75,7 @@ void main() {
         float header[10] = float[10](s.cProduct, s.cBsdf, s.cEnv, s.cUniform, s.cCosine, float(s.k),
                                      float(s.ox), float(s.oy), float(s.m), float(s.refineLevels));
         for (int k = 0; k < 10; ++k) info[base + uint(k)] = header[k];
-        for (int k = 0; k < )" + std::to_string(gpuPyramidFloats(kind)) + R"(; ++k) info[base + 10u + uint(k)] = gMass[k];
+        for (int k = 0; k < )" + std::to_string(gpuPyramidFloats(kind)) + R"(; ++k) info[base + 10u + uint(k)] = dsMass(s, k);
     }
 }
 )";

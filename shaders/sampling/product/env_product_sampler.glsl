@@ -26,6 +26,11 @@ const int kPyramidLevel = WAVELIT_MAX_PRODUCT_LEVEL;
 float gMass[((1 << (2 * (kPyramidLevel + 1))) - 1) / 3];
 int gNode[((1 << (2 * WAVELIT_MAX_PRODUCT_LEVEL)) - 1) / 3];
 
+// Cell i of the hit's pyramid: a normal bin's precomputed one (dsSetupWavelet) or the private one.
+float dsMass(DirSampler s, int i) {
+    return s.massOffset >= 0 ? uintBitsToFloat(samplerWords[uint(s.massOffset + i)]) : gMass[i];
+}
+
 // Sums the leaves (level m) of gMass up to its root; returns the total.
 float dsSumPyramid(int m) {
     for (int l = m - 1; l >= 0; --l) {
@@ -135,10 +140,11 @@ void dsParts(double a, double b, out double p0, out double p1) {
 
 // Probabilities of the rows below pyramid cell (l, x, y) and of the columns given each row: in
 // double from the float masses, each half its own share (1 - p would lose a sun's 1e-6).
-void dsChildProbabilities(int l, int x, int y, out double pRow[2], out double pColumn[4]) {
+void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
+                          out double pColumn[4]) {
     int side = 1 << (l + 1), off = pyramidOffset(l + 1);
     int c0 = off + 2 * y * side + 2 * x, c1 = c0 + side;
-    double a = gMass[c0], b = gMass[c0 + 1], c = gMass[c1], d = gMass[c1 + 1];
+    double a = dsMass(s, c0), b = dsMass(s, c0 + 1), c = dsMass(s, c1), d = dsMass(s, c1 + 1);
     dsParts(a + b, c + d, pRow[0], pRow[1]);
     dsParts(a, b, pColumn[0], pColumn[1]);
     dsParts(c, d, pColumn[2], pColumn[3]);
@@ -193,7 +199,7 @@ double dsDescendProduct(DirSampler s, bool drawing, inout dvec2 u, dvec2 p, out 
     y = 0;
     for (int level = 0; level < s.m; ++level) {
         double pRow[2], pColumn[4];
-        dsChildProbabilities(level, x, y, pRow, pColumn);
+        dsChildProbabilities(s, level, x, y, pRow, pColumn);
         int bit = s.m - 1 - level;
         int cy = takeShare(drawing, pRow[0], pRow[1], (ly >> bit) & 1, u.y, probability);
         int cx = takeShare(drawing, pColumn[2 * cy], pColumn[2 * cy + 1], (lx >> bit) & 1, u.x,
