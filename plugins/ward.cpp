@@ -81,10 +81,13 @@ public:
         BrdfSample s;
         if (wo.z <= 0.0f) return s;
         const Alphas a = alphasOf(p);
-        // Walter's eq. 7 written with atan2 so the quadrant follows 2π u2 without branches.
+        // Walter's eq. 7, φh = atan(αy/αx tan 2πu2) in the quadrant of 2πu2, taken as the
+        // direction of (αx cos 2πu2, αy sin 2πu2): no atan, whose Mesa GLSL form is a short
+        // polynomial (docs/estimator.md) that moved sampled directions by ~1e-4.
         const float psi = 2.0f * util::kPi * u2;
-        const float phi = std::atan2(a.y * std::sin(psi), a.x * std::cos(psi));
-        const float c = std::cos(phi), sn = std::sin(phi);
+        const float px = a.x * std::cos(psi), py = a.y * std::sin(psi);
+        const float len = std::sqrt(px * px + py * py);
+        const float c = px / len, sn = py / len;
         const float tan2 = -std::log(1.0f - u1) / (c * c / (a.x * a.x) + sn * sn / (a.y * a.y));
         const float cosT = 1.0f / std::sqrt(1.0f + tan2);
         const float sinT = std::sqrt(tan2) * cosT;

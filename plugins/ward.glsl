@@ -42,8 +42,9 @@ bool wardSample(float anisotropy, vec3 baseColor, float roughness, vec3 wo, floa
     if (wo.z <= 0.0) return false;
     vec2 a = wardAlphas(anisotropy, roughness);
     float psi = 2.0 * kPi * u2;
-    float phi = atan(a.y * sin(psi), a.x * cos(psi));
-    float c = cos(phi), sn = sin(phi);
+    float px = a.x * cos(psi), py = a.y * sin(psi);
+    float len = sqrt(px * px + py * py);
+    float c = px / len, sn = py / len; // the direction of atan(αy/αx tan 2πu2), without atan
     float tan2 = -log(1.0 - u1) / (c * c / (a.x * a.x) + sn * sn / (a.y * a.y));
     float cosT = 1.0 / sqrt(1.0 + tan2);
     float sinT = sqrt(tan2) * cosT;

@@ -175,6 +175,22 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         ++validSamples;
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(o[k], s.wi[k], kSampleTolerance);
+        // The f and pdf the GPU returns are the C++ formulas at the GPU's own direction (with the
+        // sampled-value bound: near a sharp peak h = normalize(wo + wi) is where rounding shows).
+        const glm::vec3 gpuWi(o[0], o[1], o[2]);
+        const glm::vec3 fAtGpuWi = c.brdf->eval(c.params, c.wo, gpuWi);
+        const float pdfAtGpuWi = c.brdf->pdf(c.params, c.wo, gpuWi);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_TRUE(near(o[4 + k], fAtGpuWi[k], kSampleTolerance)) << o[4 + k] << " vs " << fAtGpuWi[k];
+        EXPECT_TRUE(near(o[7], pdfAtGpuWi, kSampleTolerance)) << o[7] << " vs " << pdfAtGpuWi;
+        // And they are the CPU sample's. Not for the Gaussian lobes (Ward, and Blinn-Phong,
+        // which is one) at r = 0.02: there f moves by 1e-3 relative per 1e-7 rad of direction
+        // (d(tan²θh/α²) = 2 sqrt(e)/α dθ with α = 4e-4), and the two devices' sin, cos and log
+        // round the direction that differently; the checks above cover them.
+        const bool gaussianMirror = c.params.roughness < 0.05f && (std::string(c.brdf->name()) == "ward" ||
+                                                                   std::string(c.brdf->name()) == "blinn");
+        if (gaussianMirror)
+            continue;
         for (int k = 0; k < 3; ++k)
             EXPECT_TRUE(near(o[4 + k], s.f[k], kSampleTolerance)) << o[4 + k] << " vs " << s.f[k];
         EXPECT_TRUE(near(o[7], s.pdf, kSampleTolerance)) << o[7] << " vs " << s.pdf;
