@@ -47,27 +47,29 @@ util::Error fromScene(const util::Error& e, const std::string& scenePath, const 
     return makeError(e.kind, scenePath, e.message(), where);
 }
 
-// The tables of materials whose plugin reads a data file, each file once (materials may share one).
+// The tables of materials whose plugin reads a data file, each file once (materials may share
+// one). A table loaded from another file than the material now names (an edited brdfFile) is
+// replaced.
 util::Status loadBrdfTables(Scene& scene, const fs::path& base, const std::string& scenePath) {
-    std::map<std::string, std::shared_ptr<const plugins::BrdfTable>> cache;
-    for (const Material& m : scene.materials)
-        if (m.brdfTable) cache.emplace(m.brdfFile, m.brdfTable);
+    std::map<std::string, std::shared_ptr<const plugins::BrdfTable>> cache; // by resolved path
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         Material& m = scene.materials[i];
         const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
-        if (!brdf || !plugins::brdfReadsFile(*brdf) || m.brdfTable) continue;
+        if (!brdf || !plugins::brdfReadsFile(*brdf)) continue;
         const std::string where = "/materials/" + std::to_string(i) + "/brdfFile";
         if (m.brdfFile.empty())
             return makeError(util::ErrorKind::Invalid, scenePath,
                              "material '" + m.name + "' uses the " + m.brdf + " BRDF but names no brdfFile", where);
-        if (auto it = cache.find(m.brdfFile); it != cache.end()) {
+        const std::string path = (base / m.brdfFile).lexically_normal().string();
+        if (m.brdfTable && m.brdfTable->file == path) continue;
+        if (auto it = cache.find(path); it != cache.end()) {
             m.brdfTable = it->second;
             continue;
         }
-        auto table = plugins::loadMerlBrdf((base / m.brdfFile).lexically_normal().string());
+        auto table = plugins::loadMerlBrdf(path);
         if (!table) return makeError(table.error().kind, scenePath, table.error().message(), where);
         m.brdfTable = *table;
-        cache.emplace(m.brdfFile, m.brdfTable);
+        cache.emplace(path, m.brdfTable);
     }
     return util::okStatus();
 }

@@ -26,7 +26,8 @@ util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
     if (!brdf || !plugins::brdfGpuTwinProblem(*brdf).empty())
         return util::makeError(util::ErrorKind::Unsupported, "",
                                "material '" + m.name + "' uses BRDF '" + m.brdf +
-                                   "', which has no GLSL twin",
+                                   "', which has no GLSL twin: the Vulkan tracer cannot render it, "
+                                   "the CPU tracer can",
                                "/materials/" + std::to_string(index) + "/brdf");
     const uint32_t type = gpuBrdfType(*brdf, scene::brdfParamsOf(m));
     set4(g.baseColorRoughness, m.baseColor, m.roughness);
