@@ -39,7 +39,7 @@ struct BrdfTable {
 };
 
 // Errors name the file: unreadable, counts that are not positive or too large, a size that does
-// not match the counts ("expected 11,665,408 bytes for 90 x 90 x 180 bins, found 4,096"), and the
+// not match the counts ("expected 34,992,012 bytes for 90 x 90 x 180 bins, found 4,096"), and the
 // first non-finite or negative value with its bin.
 util::Result<std::shared_ptr<const BrdfTable>> loadMerlBrdf(const std::string& path);
 

@@ -8,13 +8,14 @@
 # spp in equal time, so its end point is far earlier; the 4096-spp reference's own error adds
 # only spp/4096 of mis's figure there). Images are 24 x 24 so `wavelet` gets past 64 spp.
 # Not a test: timings and noise vary with the machine's load.
-# Usage: bash tests/bench/brdf_variance.sh <wavelit-cli> <out-dir> [reference-spp] [seconds] [device]
+# Usage: bash tests/bench/brdf_variance.sh <wavelit-cli> <out-dir> [reference-spp] [seconds] [device] [seed]
 set -eu
 cli="$1"
 out="$2"
 ref_spp="${3:-4096}"
 seconds="${4:-45}"
 device="${5:-cpu}"
+seed="${6:-7}"
 src="$(cd "$(dirname "$0")/../.." && pwd)"
 scenes="$src/tests/bench/scenes"
 mkdir -p "$out"
@@ -41,7 +42,7 @@ json.dump(s, open(dst, "w"), indent=2)
 PY
     nice -n 10 "$cli" render "$scene" -o "$out/$name-ref.exr" --sampler mis --spp "$ref_spp" --device "$device" --seed 99 >/dev/null
     nice -n 10 "$cli" bench "$scene" --reference "$out/$name-ref.exr" --samplers mis,wavelet --time "$seconds" \
-        --device "$device" --out "$out/$name" >/dev/null
+        --device "$device" --seed "$seed" --out "$out/$name" >/dev/null
     python3 - "$out/$name/bench.json" "$name" "$rough" "$aniso" >>"$out/table.md" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
