@@ -6,7 +6,7 @@
 // `lambert` material. Parameters: baseColor (specular colour) and roughness r with the exponent
 // n = max(2/α² − 2, 1), α = max(r², 1e-4) (cosine_power.h: the width of a Beckmann/GGX lobe of
 // the same r). From an exponent n: r = (2 / (n + 2))^(1/4) (docs/brdfs.md). The floor n ≥ 1
-// (r > 0.93 all alike) keeps the lobe continuous: cos^0 would be a step at 90° from the mirror.
+// (r > 0.90 all alike) keeps the lobe continuous: cos^0 would be a step at 90° from the mirror.
 //
 // Sampling: cos^n α about the mirror direction, pdf = (n + 1)/(2π) cos^n α; directions below the
 // horizon are invalid samples, so f·cos/pdf ≤ (n + 2)/(n + 1) · cosθi is bounded.
