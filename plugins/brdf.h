@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -25,10 +26,23 @@
 
 namespace wavelit::plugins {
 
-// The material parameters a BRDF reads (scene::Material carries the same fields).
+struct BrdfTable; // plugins/brdf_table.h
+
+// The material parameters a BRDF reads (scene::Material carries the same fields; each plugin
+// reads only those its parameters() declare).
+// A constructor rather than an aggregate: most callers give the colour and roughness only.
 struct BrdfParams {
+    BrdfParams() = default;
+    BrdfParams(const glm::vec3& color, float r, float aniso = 0.0f,
+               std::shared_ptr<const BrdfTable> data = nullptr)
+        : baseColor(color), roughness(r), anisotropy(aniso), table(std::move(data)) {}
+
     glm::vec3 baseColor{0.8f};
-    float roughness = 0.5f; // [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
+    float roughness = 0.5f;  // [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
+    float anisotropy = 0.0f; // [0, 1]; `ward`: 0 isotropic, toward 1 stretched along the tangent
+    // `measured`: the table loaded from the material's brdfFile (null for every other plugin).
+    std::shared_ptr<const BrdfTable> table;
+    bool operator==(const BrdfParams&) const = default;
 };
 
 struct BrdfSample {
@@ -41,7 +55,7 @@ struct BrdfSample {
 // Parameter metadata, so the property registry and the editor's panels can describe plugin
 // parameters without knowing the plugin (architecture.md §9: "plugins register their parameters the same
 // way"). `name` is the Material field / JSON key.
-enum class BrdfParameterType { Color, Float };
+enum class BrdfParameterType { Color, Float, File }; // File: a path relative to the scene file
 
 struct BrdfParameterInfo {
     const char* name;
@@ -74,11 +88,25 @@ struct BrdfLobeWidth {
 //   float P(float roughness, vec3 wo, vec3 wi)
 // The GPU tracer splices the snippets in and generates the dispatch on the registry index.
 // Empty strings: the plugin has no GPU twin (the GPU tracer refuses it by name).
+//
+// A plugin that reads one more scalar parameter in [0, 1] (`ward`'s anisotropy) names it in
+// typeParameter: the GPU carries it in the material's type code (gpuBrdfType: registry index +
+// kBrdfTypeCodePlugins × the value in steps of 1/kBrdfTypeParameterSteps), and the three functions
+// then take it as a first `float` argument. The plugin rounds the value with
+// brdfTypeParameterStep itself, so both tracers compute with the same number.
+inline constexpr unsigned kBrdfTypeCodePlugins = 256;    // plugin index = code % 256
+inline constexpr unsigned kBrdfTypeParameterSteps = 4096; // code < 2^24: exact in a float
+inline float brdfTypeParameterStep(float v) {
+    const float c = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+    return float(unsigned(c * float(kBrdfTypeParameterSteps) + 0.5f)) / float(kBrdfTypeParameterSteps);
+}
+
 struct BrdfGpuTwin {
     const char* snippet = "";
     const char* sampleFn = "";
     const char* evalFn = "";
     const char* pdfFn = "";
+    float (*typeParameter)(const BrdfParams&) = nullptr;
 };
 
 class Brdf {
@@ -114,6 +142,9 @@ const char* defaultBrdfName();
 // width), empty when they are coherent. Checked where a plugin is used, so a bad plugin is an
 // error with its name, never another plugin's policy.
 std::string brdfTraitsProblem(const Brdf& brdf);
+// Whether the plugin reads a data file (a parameter of type File: `brdfFile`), which the scene
+// loader reads into BrdfParams::table (plugins/brdf_table.h).
+bool brdfReadsFile(const Brdf& brdf);
 // Same for the GLSL twin: empty when the plugin has a snippet and all three functions.
 std::string brdfGpuTwinProblem(const Brdf& brdf);
 

@@ -15,13 +15,20 @@ namespace wavelit::plugins {
 // Defined in each plugin's .cpp.
 const Brdf& lambertBrdf();
 const Brdf& ggxBrdf();
+const Brdf& glossyBrdf();
+const Brdf& phongBrdf();
+const Brdf& blinnBrdf();
+const Brdf& wardBrdf();
+const Brdf& measuredBrdf();
 
 namespace {
+
+using Registry = std::array<const Brdf*, 7>;
 
 // A plugin whose traits are incoherent (an unknown lobe axis, a width that is not a positive
 // angle) is a build defect no caller could work around: the registry refuses to start, naming
 // it, rather than let a sampler fall back to another plugin's policy.
-const std::array<const Brdf*, 2>& checked(const std::array<const Brdf*, 2>& all) {
+const Registry& checked(const Registry& all) {
     for (const Brdf* b : all)
         if (const std::string problem = brdfTraitsProblem(*b); !problem.empty()) {
             std::fprintf(stderr, "wavelit: BRDF plugin registry: %s\n", problem.c_str());
@@ -30,9 +37,10 @@ const std::array<const Brdf*, 2>& checked(const std::array<const Brdf*, 2>& all)
     return all;
 }
 
-const std::array<const Brdf*, 2>& registry() {
-    static const std::array<const Brdf*, 2> kAll{&lambertBrdf(), &ggxBrdf()};
-    static const std::array<const Brdf*, 2>& kChecked = checked(kAll);
+const Registry& registry() {
+    static const Registry kAll{&lambertBrdf(), &ggxBrdf(),  &glossyBrdf(),  &phongBrdf(),
+                               &blinnBrdf(),   &wardBrdf(), &measuredBrdf()};
+    static const Registry& kChecked = checked(kAll);
     return kChecked;
 }
 
@@ -89,6 +97,12 @@ std::string brdfTraitsProblem(const Brdf& brdf) {
             return who + "lobe width not finite and positive at roughness " + std::to_string(r);
     }
     return {};
+}
+
+bool brdfReadsFile(const Brdf& brdf) {
+    for (const BrdfParameterInfo& info : brdf.parameters())
+        if (info.type == BrdfParameterType::File) return true;
+    return false;
 }
 
 std::string brdfGpuTwinProblem(const Brdf& brdf) {

@@ -3,6 +3,7 @@
 // and the roughest one (r = 1): chi-square goodness-of-fit of sample() against pdf(), pdf
 // consistency, Monte Carlo albedo against quadrature, reciprocity and energy conservation.
 #include "plugins/brdf.h"
+#include "plugins/brdf_table.h"
 #include "plugins/testing/brdf_albedo.h"
 
 #include "util/direction_chi_square.h"
@@ -37,20 +38,38 @@ constexpr double kQuadratureRelTolerance = 1e-4;
 // 6.5e-5 (GGX r = 0.2: float error of h/alpha and the disk warp), 2e-6 for Lambert.
 constexpr float kInvertAngleTolerance = 2e-4f;
 // Reciprocity: the formulas are symmetric; float evaluation order differs (h from wo + wi).
-constexpr float kReciprocityRelTolerance = 1e-4f;
+// Issue 16 asks for 1e-5 relative.
+constexpr float kReciprocityRelTolerance = 1e-5f;
 // Energy: single scattering cannot create energy; the quadrature error bounds the slack.
 constexpr double kAlbedoSlack = 1e-4;
 
 struct Case {
+    Case(std::string name, glm::vec3 color, float r, float theta, double exponent, float aniso = 0.0f)
+        : brdf(std::move(name)), baseColor(color), roughness(r), thetoDeg(theta),
+          thetaExponent(exponent), anisotropy(aniso) {}
     std::string brdf;
     glm::vec3 baseColor;
     float roughness;
     float thetoDeg;
     double thetaExponent; // chi-square grid refinement toward the lobe axis
+    float anisotropy;
 };
 
+// The shipped example measured file (resources/brdfs/README.md), loaded once.
+std::shared_ptr<const BrdfTable> exampleTable() {
+    static const std::shared_ptr<const BrdfTable> kTable = [] {
+        auto t = loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) + "/brdfs/glossy-copper-r05.binary");
+        return t ? *t : nullptr;
+    }();
+    return kTable;
+}
+
+BrdfParams paramsOf(const std::string& brdf, glm::vec3 color, float roughness, float anisotropy) {
+    return BrdfParams(color, roughness, anisotropy, brdf == "measured" ? exampleTable() : nullptr);
+}
+
 std::ostream& operator<<(std::ostream& os, const Case& c) {
-    return os << c.brdf << " r=" << c.roughness << " θo=" << c.thetoDeg;
+    return os << c.brdf << " r=" << c.roughness << " a=" << c.anisotropy << " θo=" << c.thetoDeg;
 }
 
 glm::vec3 viewDirection(float thetaDeg) {
@@ -67,7 +86,10 @@ protected:
         EXPECT_NE(b, nullptr);
         return *b;
     }
-    BrdfParams params() const { return {GetParam().baseColor, GetParam().roughness}; }
+    BrdfParams params() const {
+        const Case& c = GetParam();
+        return paramsOf(c.brdf, c.baseColor, c.roughness, c.anisotropy);
+    }
     glm::vec3 wo() const { return viewDirection(GetParam().thetoDeg); }
 };
 
@@ -202,10 +224,16 @@ TEST_P(BrdfTest, ReciprocalAndNonNegative) {
 
 TEST_P(BrdfTest, WhiteAlbedoAtMostOne) {
     const Brdf& b = brdf();
-    BrdfParams p{glm::vec3(1.0f), GetParam().roughness};
+    BrdfParams p = params();
+    p.baseColor = glm::vec3(1.0f);
     glm::dvec3 e = directionalAlbedo(b, p, wo());
     for (int c = 0; c < 3; ++c) EXPECT_LE(e[c], 1.0 + kAlbedoSlack);
-    EXPECT_GT(e[0], 0.3); // and it reflects something: a broken eval returning 0 would pass ≤ 1
+    // And it reflects something: a broken eval returning 0 would pass ≤ 1. Phong, Blinn-Phong
+    // and Ward have no Fresnel rise and no shadowing that compensates their cut lobe, so at
+    // grazing views their albedo falls to about cosθo (0.087 at 85°): the bound follows it.
+    const bool darkensAtGrazing = GetParam().brdf == "phong" || GetParam().brdf == "blinn" ||
+                                  GetParam().brdf == "ward";
+    EXPECT_GT(e[0], darkensAtGrazing ? 0.5 * wo().z : 0.3);
 }
 
 TEST_P(BrdfTest, BelowHorizonIsZero) {
@@ -243,9 +271,55 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"ggx", glm::vec3(1.0f), 1.0f, 0.0f, 1.0},
                       Case{"ggx", kTinted, 1.0f, 85.0f, 1.0}));
 
+// Issue 16's plugins: roughness 0.02 is the near-mirror setting, θo = 85-89° the grazing one.
+INSTANTIATE_TEST_SUITE_P(
+    Glossy, BrdfTest,
+    ::testing::Values(Case{"glossy", kTinted, 0.02f, 0.0f, 3.0},
+                      Case{"glossy", kTinted, 0.02f, 85.0f, 3.0},
+                      Case{"glossy", kTinted, 0.2f, 60.0f, 2.0},
+                      Case{"glossy", kTinted, 0.5f, 30.0f, 1.0},
+                      Case{"glossy", glm::vec3(1.0f), 1.0f, 85.0f, 1.0}));
+
+INSTANTIATE_TEST_SUITE_P(
+    Phong, BrdfTest,
+    ::testing::Values(Case{"phong", kTinted, 0.02f, 0.0f, 3.0},
+                      Case{"phong", kTinted, 0.02f, 85.0f, 3.0},
+                      Case{"phong", kTinted, 0.2f, 60.0f, 2.0},
+                      Case{"phong", kTinted, 0.5f, 30.0f, 1.0},
+                      Case{"phong", glm::vec3(1.0f), 1.0f, 85.0f, 1.0}));
+
+INSTANTIATE_TEST_SUITE_P(
+    Blinn, BrdfTest,
+    ::testing::Values(Case{"blinn", kTinted, 0.02f, 0.0f, 3.0},
+                      Case{"blinn", kTinted, 0.02f, 85.0f, 3.0},
+                      Case{"blinn", kTinted, 0.2f, 60.0f, 2.0},
+                      Case{"blinn", kTinted, 0.5f, 30.0f, 1.0},
+                      Case{"blinn", glm::vec3(1.0f), 1.0f, 85.0f, 1.0}));
+
+INSTANTIATE_TEST_SUITE_P(
+    Ward, BrdfTest,
+    ::testing::Values(Case{"ward", kTinted, 0.02f, 0.0f, 3.0},
+                      Case{"ward", kTinted, 0.02f, 85.0f, 3.0},
+                      Case{"ward", kTinted, 0.2f, 60.0f, 2.0},
+                      Case{"ward", kTinted, 0.5f, 30.0f, 1.0},
+                      Case{"ward", glm::vec3(1.0f), 1.0f, 85.0f, 1.0},
+                      Case{"ward", kTinted, 0.2f, 45.0f, 2.0, 0.8f},
+                      Case{"ward", kTinted, 0.05f, 85.0f, 3.0, 1.0f},
+                      Case{"ward", glm::vec3(1.0f), 0.7f, 70.0f, 1.0, 0.5f}));
+
+// One table (the shipped example); its settings are views from normal to grazing.
+INSTANTIATE_TEST_SUITE_P(
+    Measured, BrdfTest,
+    ::testing::Values(Case{"measured", glm::vec3(1.0f), 0.5f, 0.0f, 1.0},
+                      Case{"measured", kTinted, 0.5f, 45.0f, 1.0},
+                      Case{"measured", glm::vec3(1.0f), 0.5f, 85.0f, 1.0},
+                      Case{"measured", kTinted, 0.5f, 89.0f, 1.0}));
+
 TEST(BrdfRegistry, FindsEveryPluginByNameAndDescribesItsParameters) {
     auto names = brdfNames();
-    ASSERT_EQ(names.size(), 2u);
+    const std::vector<std::string> expected{"lambert", "ggx",  "glossy",  "phong",
+                                            "blinn",   "ward", "measured"};
+    ASSERT_EQ(names, expected);
     EXPECT_EQ(names[0], "lambert");
     EXPECT_EQ(names[1], "ggx");
     EXPECT_EQ(findBrdf("nonexistent"), nullptr);

@@ -12,6 +12,7 @@
 // mirror direction z² rounds to 1 in float while alpha² can be 1.6e-7 (r = 0.02).
 // GLSL twin: ggx.glsl.
 #include "plugins/brdf.h"
+#include "plugins/ggx_microfacet.h"
 
 #include "util/hemisphere_sampling.h"
 
@@ -25,7 +26,7 @@
 namespace wavelit::plugins {
 namespace {
 
-constexpr float kMinAlpha = 1e-4f;
+using namespace ggx_detail;
 
 constexpr std::array<BrdfParameterInfo, 2> kParameters{{
     {"baseColor", "Specular colour (F0)", BrdfParameterType::Color, 0.0f, 1.0f, glm::vec3(0.8f),
@@ -34,121 +35,15 @@ constexpr std::array<BrdfParameterInfo, 2> kParameters{{
      "Microfacet roughness r; GGX alpha = r^2. 0 is a mirror, 1 is very rough"},
 }};
 
-float alphaOf(const BrdfParams& p) { return std::max(p.roughness * p.roughness, kMinAlpha); }
-
-// D(h) = α² / (π ((n·h)²(α² − 1) + 1)²), with (n·h)²(α² − 1) + 1 = x² + y² + α² z² for unit h.
-float ggxD(const glm::vec3& h, float a2) {
-    float d = h.x * h.x + h.y * h.y + a2 * h.z * h.z;
-    return a2 / (util::kPi * d * d);
-}
-
-// Λ(w) = (−1 + sqrt(1 + α² tan²θ)) / 2.
-float smithLambda(const glm::vec3& w, float a2) {
-    float tan2 = (w.x * w.x + w.y * w.y) / (w.z * w.z);
-    return 0.5f * (-1.0f + std::sqrt(1.0f + a2 * tan2));
-}
-
-glm::vec3 schlick(const glm::vec3& f0, float cosTheta) {
-    float m = std::clamp(1.0f - cosTheta, 0.0f, 1.0f);
-    float m2 = m * m;
-    return f0 + (glm::vec3(1.0f) - f0) * (m2 * m2 * m);
-}
-
-// The frame of Heitz 2018's construction: wo stretched to the alpha = 1 configuration (vh) and
-// two tangents. Shared by sampling and its inverse so both see the same frame.
-struct VisibleFrame {
-    glm::vec3 vh, t1, t2;
-    VisibleFrame(const glm::vec3& wo, float alpha) {
-        vh = glm::normalize(glm::vec3(alpha * wo.x, alpha * wo.y, wo.z));
-        float lensq = vh.x * vh.x + vh.y * vh.y;
-        t1 = lensq > 0.0f ? glm::vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq)
-                          : glm::vec3(1.0f, 0.0f, 0.0f);
-        t2 = glm::cross(vh, t1);
-    }
-};
-
-// Heitz 2018, listing 1, isotropic alpha. Returns a microfacet normal with wo·h ≥ 0.
-glm::vec3 sampleVisibleNormal(const glm::vec3& wo, float alpha, float u1, float u2) {
-    VisibleFrame f(wo, alpha);
-    float r = std::sqrt(u1);
-    float phi = 2.0f * util::kPi * u2;
-    float p1 = r * std::cos(phi);
-    float p2 = r * std::sin(phi);
-    float s = 0.5f * (1.0f + f.vh.z);
-    p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
-    glm::vec3 nh = p1 * f.t1 + p2 * f.t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * f.vh;
-    return glm::normalize(glm::vec3(alpha * nh.x, alpha * nh.y, std::max(0.0f, nh.z)));
-}
-
-// Inverse of sampleVisibleNormal: unstretch h, express it in the (t1, t2, vh) frame, undo the
-// projected-disk warp, then the polar map of (u1, u2).
-std::optional<glm::vec2> invertVisibleNormal(const glm::vec3& wo, float alpha, const glm::vec3& h) {
-    VisibleFrame f(wo, alpha);
-    glm::vec3 nh = glm::normalize(glm::vec3(h.x / alpha, h.y / alpha, h.z));
-    if (glm::dot(nh, f.vh) < 0.0f) return std::nullopt; // not a visible normal
-    float p1 = glm::dot(nh, f.t1), p2 = glm::dot(nh, f.t2);
-    float s = 0.5f * (1.0f + f.vh.z);
-    p2 = (p2 - (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1))) / s;
-    float phi = std::atan2(p2, p1);
-    if (phi < 0.0f) phi += 2.0f * util::kPi;
-    return glm::vec2(std::min(p1 * p1 + p2 * p2, 1.0f), std::min(phi / (2.0f * util::kPi), 1.0f));
-}
-
-class Ggx final : public Brdf {
+class Ggx final : public GgxLobe {
 public:
     const char* name() const override { return "ggx"; }
     std::span<const BrdfParameterInfo> parameters() const override { return kParameters; }
-    BrdfLobeAxis lobeAxis() const override { return BrdfLobeAxis::Mirror; }
-
-    // Half-width in wi: D(h) halves at theta_h ~ 0.64 alpha and wi turns twice as fast as h, so
-    // ~1.3 alpha; 2 alpha keeps the shoulder. The cap is 3 half-widths (6 alpha): the oracle's
-    // window, kept so its figures stay comparable across the variance study (docs/sampler-variance.md).
-    // In double, as the samplers computed it before the traits existed.
-    BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
-        constexpr double kHalfWidthPerAlpha = 2.0;
-        constexpr double kCapPerAlpha = 6.0;
-        const double alpha = std::max(double(p.roughness) * p.roughness, 1e-4);
-        return {kHalfWidthPerAlpha * alpha, kCapPerAlpha * alpha};
-    }
-
     BrdfGpuTwin gpuTwin() const override {
         return {"ggx.glsl", "ggxSample", "ggxEval", "ggxPdf"};
     }
-
-    glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-        if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
-        float a = alphaOf(p), a2 = a * a;
-        glm::vec3 h = glm::normalize(wo + wi);
-        float g2 = 1.0f / (1.0f + smithLambda(wo, a2) + smithLambda(wi, a2));
-        glm::vec3 f = schlick(p.baseColor, glm::dot(wi, h));
-        return ggxD(h, a2) * g2 * f / (4.0f * wo.z * wi.z);
-    }
-
-    BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
-        BrdfSample s;
-        if (wo.z <= 0.0f) return s;
-        glm::vec3 h = sampleVisibleNormal(wo, alphaOf(p), u1, u2);
-        s.wi = 2.0f * glm::dot(wo, h) * h - wo;
-        if (s.wi.z <= 0.0f) return s; // reflected below the horizon: the path ends
-        // f and pdf from wi (not the sampled h) so that pdf(wo, wi) reproduces this value exactly.
-        s.pdf = pdf(p, wo, s.wi);
-        s.f = eval(p, wo, s.wi);
-        s.valid = s.pdf > 0.0f;
-        return s;
-    }
-
-    float pdf(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-        if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-        float a = alphaOf(p), a2 = a * a;
-        glm::vec3 h = glm::normalize(wo + wi);
-        float g1 = 1.0f / (1.0f + smithLambda(wo, a2));
-        return ggxD(h, a2) * g1 / (4.0f * wo.z);
-    }
-
-    std::optional<glm::vec2> invert(const BrdfParams& p, const glm::vec3& wo,
-                                    const glm::vec3& wi) const override {
-        if (wo.z <= 0.0f || wi.z <= 0.0f) return std::nullopt;
-        return invertVisibleNormal(wo, alphaOf(p), glm::normalize(wo + wi));
+    glm::vec3 reflectance(const BrdfParams& p, float cosThetaD) const override {
+        return schlick(p.baseColor, cosThetaD);
     }
 };
 

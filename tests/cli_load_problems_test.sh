@@ -10,7 +10,7 @@ bad="$src/tests/data/bad"
 good="$src/tests/data/good"
 tiny=(--width 4 --height 4 --spp 1 --device cpu --sampler bsdf)
 
-brdf_problem="material 'ground' (/materials/1/brdf): unknown BRDF 'no_such_brdf'; known: lambert, ggx"
+brdf_problem="material 'ground' (/materials/1/brdf): unknown BRDF 'no_such_brdf'; known: lambert, ggx, glossy, phong, blinn, ward, measured"
 key_problem="unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)"
 for cmd in validate render; do
     args=()
@@ -34,13 +34,13 @@ scene_with() { # MATERIAL-JSON MESH: a one-object scene
  "lighting": {"environment": {"intensity": 1}}}
 JSON
 }
-scene_with '{"id": 1, "name": "m", "brdf": "phong", "roughnes": 0.3, "basecolor": [1, 1, 1]}' quad.obj >"$tmp/bad/two.wlscene"
+scene_with '{"id": 1, "name": "m", "brdf": "toon", "roughnes": 0.3, "basecolor": [1, 1, 1]}' quad.obj >"$tmp/bad/two.wlscene"
 for cmd in validate render; do
     args=()
     [ "$cmd" = render ] && args=(-o "$tmp/x.exr" "${tiny[@]}")
     expect 1 "two.wlscene: 3 problems:" "  unknown key 'roughnes' in /materials/0 (did you mean 'roughness'?)" \
         "  unknown key 'basecolor' in /materials/0 (did you mean 'baseColor'?)" \
-        "  material 'm' (/materials/0/brdf): unknown BRDF 'phong'; known: lambert, ggx" \
+        "  material 'm' (/materials/0/brdf): unknown BRDF 'toon'; known: lambert, ggx, glossy, phong, blinn, ward, measured" \
         -- "$cmd" "$tmp/bad/two.wlscene" "${args[@]}"
 done
 

@@ -58,16 +58,17 @@ fi
 # No code outside plugins/ names a BRDF (issue 11): renderer/, editor/ and shaders/ read a plugin's
 # traits (plugins/brdf.h), never its name. The names are what the plugins' name() returns;
 # comments, tests and their support (render/testing/, *_test_support.h) and scene data may name one.
+# A name counts where no letter precedes it: `ggxEval` and "ward" do, camForward does not.
 for brdf in $(grep -hoE 'name\(\) const override \{ return "[^"]+"' \
                   $(ls plugins/*.cpp 2>/dev/null | grep -v '_test\.cpp$') 2>/dev/null | sed -E 's/.*"([^"]+)"/\1/' | sort -u); do
     while IFS= read -r hit; do
         code=${hit#*:*:}
         code=${code%%//*}
-        if grep -qi -- "$brdf" <<< "$code"; then
+        if grep -qiE -- "(^|[^[:alpha:]])$brdf" <<< "$code"; then
             echo "layering: ${hit%%:*} names the BRDF '$brdf' outside plugins/ (use its traits): ${hit#*:}"
             status=1
         fi
-    done < <(grep -rniF --include='*.h' --include='*.cpp' --include='*.glsl' --include='*.comp' -- "$brdf" \
+    done < <(grep -rniE --include='*.h' --include='*.cpp' --include='*.glsl' --include='*.comp' -- "(^|[^[:alpha:]])$brdf" \
                  renderer editor shaders 2>/dev/null | grep -vE '^[^:]*(_test\.cpp|_test_support\.h|/testing/|/tests/)[^:]*:')
 done
 [ $status -eq 0 ] && echo "layering: ok"

@@ -98,12 +98,16 @@ std::vector<PropertyInfo> declareMaterial() {
     field(l, K, "brdf", "BRDF", PropertyType::Enum, &Material::brdf)
         .options(brdfs).noun("BRDF").required().tip(brdfTip.c_str())
         .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
-    field(l, K, "baseColor", "Base colour", PropertyType::Color, &Material::baseColor).range(0.0, 1.0)
-        .tip(plugins::brdfParameterTooltip("baseColor").c_str())
-        .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
-    field(l, K, "roughness", "Roughness", PropertyType::Float, &Material::roughness).range(0.0, 1.0)
-        .tip(plugins::brdfParameterTooltip("roughness").c_str())
-        .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
+    // The plugins' parameters: each tooltip quotes every plugin that reads it (plugins/brdf.h).
+    auto brdfParameter = [&](const char* name, const char* label, PropertyType type, auto member) {
+        return field(l, K, name, label, type, member).tip(plugins::brdfParameterTooltip(name).c_str())
+            .cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
+    };
+    brdfParameter("baseColor", "Base colour", PropertyType::Color, &Material::baseColor).range(0.0, 1.0);
+    brdfParameter("roughness", "Roughness", PropertyType::Float, &Material::roughness).range(0.0, 1.0);
+    brdfParameter("anisotropy", "Anisotropy", PropertyType::Float, &Material::anisotropy).range(0.0, 1.0);
+    // Relative to the scene; scene_io's loadAssets() (re)loads the table it names.
+    brdfParameter("brdfFile", "BRDF data file", PropertyType::Path, &Material::brdfFile);
     field(l, K, "emission", "Emission", PropertyType::Color, &Material::emission).unit("W/(m^2 sr)")
         .range(0.0, kUnbounded).tip("Emitted radiance").cost(ChangeKind::Restart, FactorKind::MaterialBrdf);
     return l;

@@ -109,7 +109,7 @@ TEST(PropertyRegistry, BrdfIsAChoiceOfThePluginRegistry) {
     EXPECT_EQ(s.materials[0].brdf, "ggx");
     const auto refused = setProperty(s, {EntityKind::Material, 3}, "brdf", std::string("no_such_brdf"));
     ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(refused.error().reason, "brdf: unknown BRDF 'no_such_brdf'; known: lambert, ggx");
+    EXPECT_EQ(refused.error().reason, "brdf: unknown BRDF 'no_such_brdf'; known: lambert, ggx, glossy, phong, blinn, ward, measured");
     EXPECT_EQ(s.materials[0].brdf, "ggx");
     for (const std::string& name : plugins::brdfNames()) EXPECT_TRUE(checkValue(brdf, name).ok()) << name;
 }

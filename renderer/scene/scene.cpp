@@ -21,6 +21,10 @@ template <typename T> const T* findById(const std::vector<T>& items, EntityId id
 }
 } // namespace
 
+plugins::BrdfParams brdfParamsOf(const Material& m) {
+    return plugins::BrdfParams(m.baseColor, m.roughness, m.anisotropy, m.brdfTable);
+}
+
 const Material* Scene::findMaterial(EntityId id) const { return findById(materials, id); }
 const Object* Scene::findObject(EntityId id) const { return findById(objects, id); }
 const Light* Scene::findLight(EntityId id) const { return findById(lighting.lights, id); }

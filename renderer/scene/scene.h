@@ -59,9 +59,17 @@ struct Material {
     std::string brdf = plugins::defaultBrdfName();
     glm::vec3 baseColor{0.8f, 0.8f, 0.8f};
     float roughness = 0.5f; // in [0, 1]; GGX alpha = roughness^2 (architecture.md §3)
+    float anisotropy = 0.0f; // in [0, 1]; `ward` stretches its lobe along the tangent
     glm::vec3 emission{0.0f}; // emitted radiance, W/(m^2 sr)
+    // A BRDF data file (plugins::brdfReadsFile: a MERL-layout table), relative to the scene file
+    // like a mesh path; loaded with the meshes (scene_io's loadAssets), shared between copies.
+    std::string brdfFile{};
+    std::shared_ptr<const plugins::BrdfTable> brdfTable{};
     std::string extras{};
 };
+
+// The parameters a material's BRDF plugin reads.
+plugins::BrdfParams brdfParamsOf(const Material& m);
 
 // Object transform: translation, then Euler XYZ rotation in degrees, then scale (T * R * S).
 struct Transform {

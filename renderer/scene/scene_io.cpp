@@ -14,6 +14,7 @@
 #include "scene/scene_io_read.h"
 #include "scene/scene_migration.h"
 #include "scene/scene_validation.h"
+#include "plugins/brdf_table.h"
 
 #include <filesystem>
 #include <map>
@@ -46,6 +47,33 @@ util::Error fromScene(const util::Error& e, const std::string& scenePath, const 
     return makeError(e.kind, scenePath, e.message(), where);
 }
 
+// The tables of materials whose plugin reads a data file, each file once (materials may share
+// one). A table loaded from another file than the material now names (an edited brdfFile) is
+// replaced.
+util::Status loadBrdfTables(Scene& scene, const fs::path& base, const std::string& scenePath) {
+    std::map<std::string, std::shared_ptr<const plugins::BrdfTable>> cache; // by resolved path
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        Material& m = scene.materials[i];
+        const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
+        if (!brdf || !plugins::brdfReadsFile(*brdf)) continue;
+        const std::string where = "/materials/" + std::to_string(i) + "/brdfFile";
+        if (m.brdfFile.empty())
+            return makeError(util::ErrorKind::Invalid, scenePath,
+                             "material '" + m.name + "' uses the " + m.brdf + " BRDF but names no brdfFile", where);
+        const std::string path = (base / m.brdfFile).lexically_normal().string();
+        if (m.brdfTable && m.brdfTable->file == path) continue;
+        if (auto it = cache.find(path); it != cache.end()) {
+            m.brdfTable = it->second;
+            continue;
+        }
+        auto table = plugins::loadMerlBrdf(path);
+        if (!table) return makeError(table.error().kind, scenePath, table.error().message(), where);
+        m.brdfTable = *table;
+        cache.emplace(path, m.brdfTable);
+    }
+    return util::okStatus();
+}
+
 } // namespace
 
 util::Status loadAssets(Scene& scene, const std::string& scenePath, LoadReport* report) {
@@ -65,6 +93,7 @@ util::Status loadAssets(Scene& scene, const std::string& scenePath, LoadReport* 
         o.mesh = std::make_shared<const TriangleMesh>(std::move(mesh).value());
         cache.emplace(o.meshPath, o.mesh);
     }
+    if (auto s = loadBrdfTables(scene, base, scenePath); !s) return s;
     if (scene.lightingPath.empty())
         return loadEnvironment(scene.lighting.environment, base, scenePath, "/lighting/environment/map", report);
     const fs::path lightingFile = (base / scene.lightingPath).lexically_normal();
@@ -186,6 +215,7 @@ void rebaseScenePaths(Scene& scene, const std::string& fromScenePath, const std:
         if (!p.empty()) p = relativeTo((from / p).string(), to);
     };
     for (Object& o : scene.objects) rebase(o.meshPath);
+    for (Material& m : scene.materials) rebase(m.brdfFile);
     if (scene.lightingPath.empty())
         rebase(scene.lighting.environment.path);
     else

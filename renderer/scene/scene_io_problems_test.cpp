@@ -14,7 +14,7 @@ namespace {
 
 using namespace scene_io_test;
 
-// "lambert, ggx": the plugin registry's names, as the messages list them.
+// "lambert, ggx, glossy, phong, blinn, ward, measured": the plugin registry's names, as the messages list them.
 std::string knownBrdfs() {
     std::string all;
     for (const std::string& n : plugins::brdfNames()) all += (all.empty() ? "" : ", ") + n;
@@ -130,7 +130,7 @@ TEST(SceneIo, UnknownBrdfNamesTheMaterialAndTheKnownOnes) {
     ASSERT_FALSE(s.ok());
     EXPECT_EQ(s.error().reason,
               "material 'ground' (/materials/1/brdf): unknown BRDF 'no_such_brdf'; known: " + knownBrdfs());
-    EXPECT_EQ(knownBrdfs(), "lambert, ggx");
+    EXPECT_EQ(knownBrdfs(), "lambert, ggx, glossy, phong, blinn, ward, measured");
 }
 
 // Every unknown key and BRDF of a file is listed, one per line, then the error that stopped the
@@ -141,7 +141,7 @@ TEST(SceneIo, EveryProblemOfAFileIsListed) {
     const fs::path path = tmp.path / "many.wlscene";
     writeText(path, R"({"format": "wavelit-scene", "version": 1, "nmae": "x",
       "camera": {"fovy": 30},
-      "materials": [{"id": 1, "name": "a", "brdf": "phong", "baseColour": [1, 0, 0]}],
+      "materials": [{"id": 1, "name": "a", "brdf": "toon", "baseColour": [1, 0, 0]}],
       "objects": [{"id": 1, "name": "o", "mesh": "mesh.obj", "material": 1}],
       "lighting": {"environment": {"intensity": 1},
                    "lights": [{"id": 1, "type": "point", "intensty": 5, "color": "red"}]}})");
@@ -152,7 +152,7 @@ TEST(SceneIo, EveryProblemOfAFileIsListed) {
                                 "  unknown key 'nmae' in / (did you mean 'name'?)\n"
                                 "  unknown key 'fovy' in /camera (did you mean 'fov'?)\n"
                                 "  unknown key 'baseColour' in /materials/0 (did you mean 'baseColor'?)\n"
-                                "  material 'a' (/materials/0/brdf): unknown BRDF 'phong'; known: " + knownBrdfs() + "\n"
+                                "  material 'a' (/materials/0/brdf): unknown BRDF 'toon'; known: " + knownBrdfs() + "\n"
                                 "  unknown key 'intensty' in /lighting/lights/0 (did you mean 'intensity'?)\n"
                                 "  /lighting/lights/0/color: color: expected an array of 3 numbers, got a string");
 

@@ -8,15 +8,17 @@
 namespace wavelit::render {
 namespace {
 
-// One `if (type == i) return call;` line per plugin with a GLSL twin.
+// One `if (plugin == i) return call;` line per plugin with a GLSL twin; a twin that reads a
+// type parameter (plugins/brdf.h: BrdfGpuTwin::typeParameter) gets it decoded as its first argument.
 std::string cases(const char* plugins::BrdfGpuTwin::*fn, const char* args) {
-    std::string out;
+    std::string out = "    uint plugin = type % " + std::to_string(plugins::kBrdfTypeCodePlugins) + "u;\n";
     const auto all = plugins::brdfRegistry();
     for (size_t i = 0; i < all.size(); ++i) {
         if (!plugins::brdfGpuTwinProblem(*all[i]).empty())
             continue;
-        out += "    if (type == " + std::to_string(i) + "u) return " + (all[i]->gpuTwin().*fn) +
-               "(" + args + ");\n";
+        const plugins::BrdfGpuTwin twin = all[i]->gpuTwin();
+        out += "    if (plugin == " + std::to_string(i) + "u) return " + (twin.*fn) + "(" +
+               (twin.typeParameter ? "brdfTypeParameter(type), " : "") + args + ");\n";
     }
     return out;
 }
@@ -30,7 +32,10 @@ bool startsWith(const std::string& line, const char* prefix) {
 std::string brdfDispatchGlsl() {
     std::string g = "// BRDF dispatch generated from the plugin registry "
                     "(render/gpu/brdf_shader_source.cpp)\n"
-                    "#define WAVELIT_BRDF_DISPATCH 1\n";
+                    "#define WAVELIT_BRDF_DISPATCH 1\n"
+                    "float brdfTypeParameter(uint type) {\n"
+                    "    return float(type / " + std::to_string(plugins::kBrdfTypeCodePlugins) +
+                    "u) / " + std::to_string(plugins::kBrdfTypeParameterSteps) + ".0;\n}\n";
     for (const plugins::Brdf* b : plugins::brdfRegistry())
         if (plugins::brdfGpuTwinProblem(*b).empty())
             g += std::string("#include \"") + b->gpuTwin().snippet + "\"\n";

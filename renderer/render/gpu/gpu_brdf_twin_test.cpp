@@ -1,5 +1,6 @@
 // Each BRDF's GLSL twin (plugins/<name>.glsl) against its C++ plugin (plugins/<name>.cpp): the
-// same (wo, u1, u2, params) through sample, eval and pdf on the Vulkan device and on the CPU.
+// same (wo, u1, u2, params) through sample, eval and pdf on the Vulkan device and on the CPU,
+// 10^4 cases per plugin.
 // architecture.md §9: a C++ BRDF and its GLSL twin are never left without a test comparing them.
 #include "plugins/brdf.h"
 #include "render/gpu/brdf_shader_source.h"
@@ -16,7 +17,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace wavelit::render {
 namespace {
@@ -53,6 +56,10 @@ void main() {
 constexpr float kEvalTolerance = 1e-4f;
 constexpr float kSampleTolerance = 2e-3f;
 
+float relativeError(float a, float b) {
+    return std::abs(b) > 1e-3f ? std::abs(a - b) / std::abs(b) : 0.0f;
+}
+
 bool near(float a, float b, float rel) {
     return std::abs(a - b) <= rel * std::max(1.0f, std::abs(b));
 }
@@ -71,12 +78,22 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         glm::vec3 wo, probe;
         float u1, u2;
     };
+    // Every plugin with a GLSL twin, 10^4 random (wo, probe) pairs each for eval and pdf (issue
+    // 16), at roughnesses from near-mirror to 1, views up to grazing, random anisotropy for the
+    // plugins that read it (carried in the type code: plugins/brdf.h).
+    std::vector<const plugins::Brdf*> twins;
+    for (const plugins::Brdf* b : plugins::brdfRegistry())
+        if (plugins::brdfGpuTwinProblem(*b).empty())
+            twins.push_back(b);
+    ASSERT_GE(twins.size(), 6u);
+    constexpr int kPairsPerPlugin = 10'000;
     std::vector<Case> cases;
     util::Pcg32 rng(2024);
     const float roughnesses[] = {0.02f, 0.2f, 0.5f, 1.0f};
-    for (int i = 0; i < 512; ++i) {
-        bool ggx = i % 2 == 1;
-        float cosO = i % 16 == 3 ? 0.0872f : 0.05f + 0.95f * rng.nextFloat(); // incl. 85 deg
+    for (int i = 0; i < kPairsPerPlugin * int(twins.size()); ++i) {
+        const plugins::Brdf* brdf = twins[size_t(i) % twins.size()];
+        int k = i / int(twins.size());
+        float cosO = k % 16 == 3 ? 0.0872f : 0.05f + 0.95f * rng.nextFloat(); // incl. 85 deg
         float phi = 6.2831853f * rng.nextFloat();
         float sinO = std::sqrt(1.0f - cosO * cosO);
         glm::vec3 wo(sinO * std::cos(phi), sinO * std::sin(phi), cosO);
@@ -84,12 +101,9 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         glm::vec3 probe(pr * std::cos(pphi), pr * std::sin(pphi), 0.0f);
         probe.z = std::sqrt(std::max(0.0f, 1.0f - probe.x * probe.x - probe.y * probe.y));
         plugins::BrdfParams p{glm::vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()),
-                              roughnesses[(i / 2) % 4]};
+                              roughnesses[k % 4], k % 3 == 0 ? 0.0f : rng.nextFloat()};
         float u1 = rng.nextFloat(), u2 = rng.nextFloat();
-        cases.push_back(
-            {plugins::findBrdf(ggx ? "ggx" : "lambert"), 0u, p, wo, probe, u1, u2});
-        ASSERT_TRUE(cases.back().brdf);
-        cases.back().type = gpuBrdfType(*cases.back().brdf);
+        cases.push_back({brdf, gpuBrdfType(*brdf, p), p, wo, probe, u1, u2});
     }
     std::vector<float> in;
     for (const Case& c : cases) {
@@ -135,6 +149,7 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         outBuf->read(out.data(), out.size() * 4);
     }
     int validSamples = 0;
+    float worstEvalRel = 0.0f; // over values above 1e-3, printed for the record
     for (uint32_t i = 0; i < n; ++i) {
         const Case& c = cases[i];
         const float* o = &out[12 * i];
@@ -144,9 +159,12 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         // Eval and pdf at a fixed direction: pure formulas, tight agreement.
         glm::vec3 fe = c.brdf->eval(c.params, c.wo, c.probe);
         float pe = c.brdf->pdf(c.params, c.wo, c.probe);
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < 3; ++k) {
             EXPECT_TRUE(near(o[8 + k], fe[k], kEvalTolerance)) << o[8 + k] << " vs " << fe[k];
+            worstEvalRel = std::max(worstEvalRel, relativeError(o[8 + k], fe[k]));
+        }
         EXPECT_TRUE(near(o[11], pe, kEvalTolerance)) << o[11] << " vs " << pe;
+        worstEvalRel = std::max(worstEvalRel, relativeError(o[11], pe));
         // Sampling: validity may flip only at the horizon; otherwise the same direction.
         if (s.valid != (o[3] == 1.0f)) {
             EXPECT_LT(std::abs(s.wi.z), 1e-3f) << "validity differs away from the horizon";
@@ -157,11 +175,29 @@ TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
         ++validSamples;
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(o[k], s.wi[k], kSampleTolerance);
+        // The f and pdf the GPU returns are the C++ formulas at the GPU's own direction (with the
+        // sampled-value bound: near a sharp peak h = normalize(wo + wi) is where rounding shows).
+        const glm::vec3 gpuWi(o[0], o[1], o[2]);
+        const glm::vec3 fAtGpuWi = c.brdf->eval(c.params, c.wo, gpuWi);
+        const float pdfAtGpuWi = c.brdf->pdf(c.params, c.wo, gpuWi);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_TRUE(near(o[4 + k], fAtGpuWi[k], kSampleTolerance)) << o[4 + k] << " vs " << fAtGpuWi[k];
+        EXPECT_TRUE(near(o[7], pdfAtGpuWi, kSampleTolerance)) << o[7] << " vs " << pdfAtGpuWi;
+        // And they are the CPU sample's. Not for the Gaussian lobes (Ward, and Blinn-Phong,
+        // which is one) at r = 0.02: there f moves by 1e-3 relative per 1e-7 rad of direction
+        // (d(tan²θh/α²) = 2 sqrt(e)/α dθ with α = 4e-4), and the two devices' sin, cos and log
+        // round the direction that differently; the checks above cover them.
+        const bool gaussianMirror = c.params.roughness < 0.05f && (std::string(c.brdf->name()) == "ward" ||
+                                                                   std::string(c.brdf->name()) == "blinn");
+        if (gaussianMirror)
+            continue;
         for (int k = 0; k < 3; ++k)
             EXPECT_TRUE(near(o[4 + k], s.f[k], kSampleTolerance)) << o[4 + k] << " vs " << s.f[k];
         EXPECT_TRUE(near(o[7], s.pdf, kSampleTolerance)) << o[7] << " vs " << s.pdf;
     }
     EXPECT_GT(validSamples, int(n) * 3 / 4);
+    std::printf("[twin] %u cases, %d valid samples; worst eval/pdf relative error (values > 1e-3): %.2e\n",
+                n, validSamples, double(worstEvalRel));
     EXPECT_EQ((*ctx)->validationMessageCount(), 0);
 }
 

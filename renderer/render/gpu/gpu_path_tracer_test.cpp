@@ -279,7 +279,7 @@ TEST(GpuPathTracer, SetSceneSwapsDataAndKeepsThePipeline) {
 
     // A scene the GPU cannot draw is refused and the previous one stays usable.
     scene::Material odd;
-    odd.brdf = "phong";
+    odd.brdf = "toon";
     auto third = makeFurnaceScene(odd, glm::vec3(3.0f), 8, 4);
     EXPECT_FALSE(
         gpu->setScene(third, std::make_shared<const scene::Bvh>(scene::buildBvh(*third))).ok());
@@ -362,7 +362,7 @@ TEST(GpuPathTracer, ShaderCompileErrorNamesFileAndLine) {
 TEST(GpuPathTracer, UnknownBrdfIsUnsupported) {
     scene::Material mat;
     mat.name = "weird";
-    mat.brdf = "phong";
+    mat.brdf = "toon";
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 8, 4);
     auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
     auto gpu = createGpuPathTracer(scene, bvh, testOptions(1, 8, 8));

@@ -26,9 +26,10 @@ util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
     if (!brdf || !plugins::brdfGpuTwinProblem(*brdf).empty())
         return util::makeError(util::ErrorKind::Unsupported, "",
                                "material '" + m.name + "' uses BRDF '" + m.brdf +
-                                   "', which has no GLSL twin",
+                                   "', which has no GLSL twin: the Vulkan tracer cannot render it, "
+                                   "the CPU tracer can",
                                "/materials/" + std::to_string(index) + "/brdf");
-    const uint32_t type = gpuBrdfType(*brdf);
+    const uint32_t type = gpuBrdfType(*brdf, scene::brdfParamsOf(m));
     set4(g.baseColorRoughness, m.baseColor, m.roughness);
     set4(g.emissionType, m.emission, float(type));
     return g;
@@ -37,6 +38,13 @@ util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
 } // namespace
 
 uint32_t gpuBrdfType(const plugins::Brdf& brdf) { return uint32_t(plugins::brdfIndex(brdf)); }
+
+uint32_t gpuBrdfType(const plugins::Brdf& brdf, const plugins::BrdfParams& params) {
+    const plugins::BrdfGpuTwin twin = brdf.gpuTwin();
+    const float step = twin.typeParameter ? plugins::brdfTypeParameterStep(twin.typeParameter(params)) : 0.0f;
+    return gpuBrdfType(brdf) +
+           plugins::kBrdfTypeCodePlugins * uint32_t(step * float(plugins::kBrdfTypeParameterSteps));
+}
 
 GpuLight packGpuLight(const scene::Light& light) {
     // The constants LightSampler uses on the CPU, so both tracers see the same values.

@@ -25,6 +25,9 @@ inline constexpr uint32_t kGpuLightSun = 4;
 // A BRDF's type code in GpuMaterial::emissionType.w: its plugin registry index, which the
 // dispatch generated from the registry switches on (render/gpu/brdf_shader_source.h).
 uint32_t gpuBrdfType(const plugins::Brdf& brdf);
+// The type code of a material: the index, plus the plugin's type parameter where it has one
+// (plugins/brdf.h: BrdfGpuTwin::typeParameter, e.g. `ward`'s anisotropy).
+uint32_t gpuBrdfType(const plugins::Brdf& brdf, const plugins::BrdfParams& params);
 
 // Mirrors `uniform Params` in path_tracer.comp (std140: all members vec4/uvec4).
 struct GpuParams {

@@ -64,7 +64,7 @@ CpuPathTracer::resolveMaterials(const scene::Scene& scene) {
         return all.error();
     std::vector<ResolvedMaterial> materials;
     for (const SceneMaterial& m : *all)
-        materials.push_back({m.brdf, plugins::BrdfParams{m.material.baseColor, m.material.roughness},
+        materials.push_back({m.brdf, scene::brdfParamsOf(m.material),
                              m.material.emission});
     return materials;
 }

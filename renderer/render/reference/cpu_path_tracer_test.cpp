@@ -52,13 +52,13 @@ TEST(CpuPathTracer, AcceptsEverySamplerAndRejectsUnknownBrdfs) {
     }
 
     auto bad = std::make_shared<scene::Scene>(*scene);
-    bad->materials[0].brdf = "phong";
+    bad->materials[0].brdf = "toon";
     bad->materials[0].name = "shiny";
     auto r2 = createCpuPathTracer(bad, bvh, smallOptions(8, 1));
     ASSERT_FALSE(r2.ok());
     EXPECT_EQ(r2.error().kind, util::ErrorKind::Unsupported);
     EXPECT_NE(r2.error().message().find("shiny"), std::string::npos);
-    EXPECT_NE(r2.error().message().find("phong"), std::string::npos);
+    EXPECT_NE(r2.error().message().find("toon"), std::string::npos);
 
     RenderOptions zero = smallOptions(0, 1);
     auto r3 = createCpuPathTracer(scene, bvh, zero);

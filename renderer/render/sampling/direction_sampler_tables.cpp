@@ -28,8 +28,7 @@ bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironment
 } // namespace
 
 bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b) {
-    return a.brdf == b.brdf && a.params.baseColor == b.params.baseColor &&
-           a.params.roughness == b.params.roughness;
+    return a.brdf == b.brdf && a.params == b.params;
 }
 
 std::shared_ptr<const DirectionSamplerTables>

@@ -88,7 +88,7 @@ util::Result<SceneSamplerTables> SamplerTablesCache::update(
         if (used[i]) {
             const scene::Material& m = (*all)[i].material;
             out.samplerIndexOfMaterial[i] = int(materials.size());
-            materials.push_back({m.name, (*all)[i].brdf, plugins::BrdfParams{m.baseColor, m.roughness}});
+            materials.push_back({m.name, (*all)[i].brdf, scene::brdfParamsOf(m)});
         }
     const bool sameKind = m_previous && m_previous->kind() == kind;
     if (changed && sameKind && !touchesTables(*changed)) {

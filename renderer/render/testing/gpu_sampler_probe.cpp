@@ -158,7 +158,7 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
         if (const std::string problem = plugins::brdfGpuTwinProblem(*m.brdf); !problem.empty())
             return util::makeError(util::ErrorKind::Unsupported, "", "probe: " + problem);
         scene.samplerIndexOfMaterial.push_back(int(p.material));
-        const float type = float(gpuBrdfType(*m.brdf));
+        const float type = float(gpuBrdfType(*m.brdf, m.params));
         const float v[20] = {p.t.x,  p.t.y,  p.t.z,  0,    p.b.x,  p.b.y,  p.b.z,
                              0,      p.n.x,  p.n.y,  p.n.z, type, p.wo.x, p.wo.y,
                              p.wo.z, m.params.roughness, m.params.baseColor.x,

@@ -109,7 +109,7 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     p.refineCellAngle = kRefineCellPerLobe * p.lobeHalfWidth;
     p.refineMaxLevels = kRefineMaxLevels;
     std::snprintf(why, sizeof why,
-                  "glossy: cap %.3f rad around the reflection vector (%s), %dx%d bins, 32^2 "
+                  "mirror lobe: cap %.3f rad around the reflection vector (%s), %dx%d bins, 32^2 "
                   "product, K env %zu / brdf %zu, lobe-refined to %.3f rad, then by the env pyramid",
                   p.capHalfAngle, whole ? "whole sphere" : "window", 1 << p.binLevel,
                   1 << p.binLevel, p.envKeep, p.brdfKeep, p.refineCellAngle);
