@@ -60,7 +60,7 @@ GpuBufferPlan gpuLightGroupPlan(size_t groups, int width, int height) {
     const uint64_t pixels = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0));
     return {"light groups", uint64_t(groups) * pixels * 3 * sizeof(float), uint64_t(groups) * pixels,
             "group pixels",
-            "the light groups (" + std::to_string(groups) + " layers of " + sizeText(width, height) +
+            "--light-groups (" + std::to_string(groups) + " layers of " + sizeText(width, height) +
                 ", 12 bytes a pixel each)",
             "merge lights into fewer groups (the light's `group` property), render without "
             "--light-groups, or render at a smaller size"};
