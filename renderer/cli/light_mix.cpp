@@ -84,15 +84,17 @@ util::Result<scene::LayeredImage> mixLayers(const scene::LayeredImage& image,
                          "no light group " + unknown + " (its groups: " + known + ")");
     }
     scene::LayeredImage out = image;
-    std::vector<util::ImageRGB> weighted;
+    std::vector<const util::ImageRGB*> layers;
+    std::vector<glm::vec3> layerWeights;
     for (scene::ExrLayerImage& layer : out.layers) {
         glm::vec3 w(1.0f);
         for (const auto& [name, weight] : weights)
             if (name == layer.name) w = weight;
-        for (glm::vec3& p : layer.image.pixels) p *= w;
-        weighted.push_back(layer.image);
+        for (glm::vec3& p : layer.image.pixels) p *= w; // the output's layers carry their weights
+        layers.push_back(&layer.image);
+        layerWeights.push_back(glm::vec3(1.0f)); // already applied
     }
-    out.beauty = render::mixGroupLayers(weighted, {}); // every weight already applied
+    out.beauty = render::mixGroupLayers(layers, layerWeights);
     return out;
 }
 

@@ -16,7 +16,7 @@ const char* kUsage =
     "         [--report REPORT.json] [--also OUT2.exr|png] [--passes FIRST:COUNT] [--mpi]\n"
     "         [--light-groups]   (EXR: beauty R,G,B + one <group>.R,.G,.B layer per light group)\n"
     "  merge PART.exr [PART.exr ...] -o OUT.exr\n"
-    "  mix IN.exr -o OUT.exr|png --weights GROUP=W|GROUP=R:G:B[,...]   (LightMix: reweight layers)\n"
+    "  mix IN.exr -o OUT.exr|png --weights GROUP=W|GROUP=R:G:B[,...] [--exposure EV]\n"
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
     "  validate FILE\n"
     "  wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]\n"

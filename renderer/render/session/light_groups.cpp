@@ -38,15 +38,23 @@ LightGroups lightGroupsOf(const scene::Scene& scene) {
     return g;
 }
 
-util::ImageRGB mixGroupLayers(const std::vector<util::ImageRGB>& layers,
+util::ImageRGB mixGroupLayers(const std::vector<const util::ImageRGB*>& layers,
                               const std::vector<glm::vec3>& weights) {
     if (layers.empty()) return {};
-    util::ImageRGB out(layers[0].width, layers[0].height);
+    util::ImageRGB out(layers[0]->width, layers[0]->height);
     for (size_t g = 0; g < layers.size(); ++g) {
         const glm::vec3 w = g < weights.size() ? weights[g] : glm::vec3(1.0f);
-        for (size_t p = 0; p < out.pixels.size(); ++p) out.pixels[p] += w * layers[g].pixels[p];
+        const std::vector<glm::vec3>& in = layers[g]->pixels;
+        for (size_t p = 0; p < out.pixels.size(); ++p) out.pixels[p] += w * in[p];
     }
     return out;
+}
+
+util::ImageRGB mixGroupLayers(const std::vector<util::ImageRGB>& layers,
+                              const std::vector<glm::vec3>& weights) {
+    std::vector<const util::ImageRGB*> pointers;
+    for (const util::ImageRGB& layer : layers) pointers.push_back(&layer);
+    return mixGroupLayers(pointers, weights);
 }
 
 uint64_t lightGroupLayerBytes(size_t groups, int width, int height) {

@@ -41,6 +41,9 @@ LightGroups lightGroupsOf(const scene::Scene& scene);
 // layers must share one size; no layers: an empty image.
 util::ImageRGB mixGroupLayers(const std::vector<util::ImageRGB>& layers,
                               const std::vector<glm::vec3>& weights);
+// The same over layers held elsewhere (no copies: the editor's remix, `wavelit-cli mix`).
+util::ImageRGB mixGroupLayers(const std::vector<const util::ImageRGB*>& layers,
+                              const std::vector<glm::vec3>& weights);
 
 // Bytes of float RGB layers (12 per group and pixel): what the Vulkan tracer allocates; the CPU
 // reference sums in double (24).
