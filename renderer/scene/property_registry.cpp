@@ -198,8 +198,7 @@ std::vector<PropertyInfo> declareLight() {
         .unit("deg").range(0.0, 90.0).lights({T::Sun}).tip("Apparent size (the Sun: 0.53)").cost(R, F);
     field(l, K, "group", "Light group", PropertyType::String, &Light::group).omitWhenDefault()
         .tip("LightMix layer shared with lights of the same group (empty: its own)").cost(R, F);
-    field(l, K, "muted", "Muted", PropertyType::Bool, &Light::muted).omitWhenDefault()
-        .tip("Emits nothing; intensity and colour are kept").cost(R, F);
+    field(l, K, "muted", "Muted", PropertyType::Bool, &Light::muted).omitWhenDefault().tip("Emits nothing").cost(R, F);
     return l;
 }
 
