@@ -115,8 +115,13 @@ bool RenderWorker::tryRemix(const RenderJob& job) {
     m_generation = job.generation;
     m_maxSpp = job.maxSamplesPerPixel;
     m_remixed = true;
-    // The next display frame: now, from the samples so far (none yet: the first pass publishes).
-    if (m_session->samplesPerPixel() > 0) publish();
+    // The next display frame: now, from the samples so far (none yet: the first pass publishes);
+    // its status says what it cost (layer read-back, recombination, tone mapping).
+    if (m_session->samplesPerPixel() > 0) {
+        m_remixTimer.start();
+        publish();
+        m_remixTimer.invalidate();
+    }
     return true;
 }
 
@@ -198,11 +203,15 @@ void RenderWorker::publish() {
     frame.elapsedSeconds = stats.elapsedSeconds;
     frame.deviceName = QString::fromStdString(stats.deviceName);
     frame.validationMessages = stats.validationMessages;
-    frame.lastUpdate = m_remixed ? QStringLiteral("remixed: no restart")
-                                 : QString::fromStdString(render::describeUpdate(stats.lastUpdate));
+    frame.lastUpdate = QString::fromStdString(render::describeUpdate(stats.lastUpdate));
     frame.generation = m_generation;
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
+    if (m_remixed)
+        frame.lastUpdate = m_remixTimer.isValid()
+                               ? QStringLiteral("remixed: no restart (frame in %1 ms)")
+                                     .arg(double(m_remixTimer.nsecsElapsed()) * 1e-6, 0, 'f', 2)
+                               : QStringLiteral("remixed: no restart");
     m_publishedSpp = frame.samplesPerPixel;
     m_sinceFrame.restart();
     emitFrame(std::move(frame));

@@ -103,6 +103,7 @@ private:
     std::shared_ptr<const scene::Scene> m_renderedScene;
     std::vector<glm::vec3> m_weights;
     bool m_remixed = false;
+    QElapsedTimer m_remixTimer; // valid while tryRemix publishes (the frame says its cost)
 };
 
 } // namespace wavelit::editor

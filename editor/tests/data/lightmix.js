@@ -10,7 +10,7 @@ function nextFrame(spp) { return app.waitForSamples(spp + 1, 300); }
 var spp = app.waitForSamples(3, 300);
 function remix(what) {
     spp = nextFrame(spp);
-    check(app.frameStatus() == "remixed: no restart", what + " restarted the render: " + app.frameStatus());
+    check(app.frameStatus().indexOf("remixed: no restart") == 0, what + " restarted the render: " + app.frameStatus());
     console.log(what + ": remixed at " + spp + " spp");
 }
 app.setProperty("light:window", "intensity", 80);
@@ -41,7 +41,7 @@ remix("undo mute");
 app.setProperty("light:lamp", "position", [1.0, 0.9, 1.2]);
 app.waitForSamples(1, 300);
 var waited = 0;
-while (app.frameStatus() == "remixed: no restart" && waited++ < 100) app.waitForSamples(app.samples() + 1, 300);
-check(app.frameStatus() != "remixed: no restart", "a light move was remixed");
+while (app.frameStatus().indexOf("remixed") == 0 && waited++ < 100) app.waitForSamples(app.samples() + 1, 300);
+check(app.frameStatus().indexOf("remixed") != 0, "a light move was remixed");
 console.log("light move: " + app.frameStatus());
 app.quit(0);
