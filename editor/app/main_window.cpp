@@ -122,6 +122,13 @@ void MainWindow::wireDocument() {
     };
     connect(m_properties, &PropertyPanel::editRequested, this, applyEdit);
     connect(m_lightMix, &LightMixPanel::editRequested, this, applyEdit);
+    connect(m_outline, &OutlinePanel::muteRequested, this, [applyEdit](scene::EntityId id, bool muted) {
+        applyEdit({{EntityKind::Light, id}, "muted", muted});
+    });
+    connect(m_outline, &OutlinePanel::soloRequested, this, [this](scene::EntityId id) {
+        if (auto status = m_document->solo(id); !status)
+            m_errors->report(tr("Solo"), QString::fromStdString(status.error().message()));
+    });
 }
 
 void MainWindow::wireRendering() {

@@ -7,7 +7,6 @@
 #include "panels/entity_ref.h"
 #include "viewport/render_controller.h"
 
-#include <QUndoStack>
 
 namespace wavelit::editor {
 
@@ -22,15 +21,7 @@ bool AppApi::solo(const QString& light) {
     auto ref = resolveEntity(*scene, light.toStdString());
     if (!ref) return fail("solo: " + QString::fromStdString(ref.error().message()));
     if (ref->kind != scene::EntityKind::Light) return fail("solo: '" + light + "' is not a light");
-    // One undo step however many lights change.
-    document->undoStack()->beginMacro("solo " + light);
-    util::Status status = util::okStatus();
-    for (const scene::Light& l : scene->lighting.lights) {
-        const bool muted = l.id != ref->id;
-        if (l.muted != muted && status)
-            status = document->apply({{scene::EntityKind::Light, l.id}, "muted", muted});
-    }
-    document->undoStack()->endMacro();
+    auto status = document->solo(ref->id);
     return status ? true : fail(QString::fromStdString(status.error().message()));
 }
 

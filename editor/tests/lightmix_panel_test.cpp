@@ -1,12 +1,15 @@
 // LightMixPanel (docs/lightmix.md): one row per light plus the environment; changing a mute box
 // or an intensity box asks for exactly that property edit; showing a scene updates the values
-// without asking for edits; the rows follow added lights.
+// without asking for edits; the rows follow added lights. The outline's light check boxes ask for
+// mutes.
 #include "panels/lightmix_panel.h"
+#include "panels/outline_panel.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QTreeWidget>
 #include <QtTest>
 
 using namespace wavelit;
@@ -93,6 +96,29 @@ private slots:
         panel.setScene(s);
         QVERIFY(panel.findChild<QDoubleSpinBox*>("intensity:rim") != nullptr);
         QCOMPARE(spy.count(), 0);
+    }
+
+    // The outline's light rows carry a check box: checked = emits; unchecking asks for a mute.
+    void outlineCheckBoxesMuteLights() {
+        OutlinePanel outline;
+        outline.setScene(twoLights());
+        QTreeWidgetItem* key = nullptr;
+        QTreeWidgetItem* lamp = nullptr;
+        for (QTreeWidgetItemIterator it(outline.tree()); *it; ++it) {
+            if ((*it)->text(0) == "key") key = *it;
+            if ((*it)->text(0) == "lamp") lamp = *it;
+        }
+        QVERIFY(key && lamp);
+        QCOMPARE(key->checkState(0), Qt::Checked);
+        QCOMPARE(lamp->checkState(0), Qt::Unchecked); // muted
+        QSignalSpy mute(&outline, &OutlinePanel::muteRequested);
+        key->setCheckState(0, Qt::Unchecked);
+        QTRY_COMPARE(mute.count(), 1);
+        QCOMPARE(mute.at(0).at(0).value<scene::EntityId>(), scene::EntityId(1));
+        QCOMPARE(mute.at(0).at(1).toBool(), true);
+        outline.setScene(twoLights()); // a rebuild asks for nothing
+        QTest::qWait(10);
+        QCOMPARE(mute.count(), 1);
     }
 };
 

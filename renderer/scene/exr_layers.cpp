@@ -12,6 +12,7 @@
 #include <ImfStringAttribute.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -115,7 +116,6 @@ util::Result<LayeredImage> readExrLayers(const std::string& path, int maxDimensi
             if (!complete(layers[""]))
                 return makeError(ErrorKind::Unsupported, path, "no R,G,B channels (the beauty)");
             LayeredImage out;
-            out.beauty = util::ImageRGB(int(w), int(h));
             for (const auto& [name, parts] : layers) {
                 if (name.empty()) continue;
                 const bool any = parts.count("R") || parts.count("G") || parts.count("B");
@@ -124,8 +124,19 @@ util::Result<LayeredImage> readExrLayers(const std::string& path, int maxDimensi
                     return makeError(ErrorKind::Format, path,
                                      "layer '" + name + "' lacks one of " + name + ".R, " + name +
                                          ".G, " + name + ".B");
-                out.layers.push_back({name, util::ImageRGB(int(w), int(h))});
+                out.layers.push_back({name, util::ImageRGB()});
             }
+            // A header can claim any size: refuse what could not be a render before allocating.
+            constexpr uint64_t kMaxBytes = uint64_t(8) << 30;
+            const uint64_t bytes =
+                uint64_t(w) * uint64_t(h) * (out.layers.size() + 1) * sizeof(glm::vec3);
+            if (bytes > kMaxBytes)
+                return makeError(ErrorKind::Invalid, path,
+                                 std::to_string(w) + "x" + std::to_string(h) + " with " +
+                                     std::to_string(out.layers.size()) +
+                                     " layers needs more than 8 GiB");
+            out.beauty = util::ImageRGB(int(w), int(h));
+            for (ExrLayerImage& layer : out.layers) layer.image = util::ImageRGB(int(w), int(h));
             Imf::FrameBuffer fb;
             // Slices address data-window coordinates: shift the bases so (min.x, min.y) is pixel 0.
             const ptrdiff_t shift = (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * ptrdiff_t(w)) *
