@@ -76,6 +76,10 @@ layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; 
 #include "sampling/direction_sampler.glsl"
 #endif
 
+#ifdef WAVELIT_LIGHT_GROUPS
+#include "common/light_groups.glsl"
+#endif
+
 #include "common/path_sampler.glsl"
 #include "common/camera.glsl"
 #include "common/environment.glsl"
@@ -92,8 +96,10 @@ vec3 envRadiance(vec3 dir) {
 
 // LightSet::emissionAlongRay with the Mis strategy: every light crossed before the surface hit
 // (tMax) or, when the ray escaped, also the sun; weight 1 for camera rays.
+// With light groups, each light's term (times the path throughput beta) also goes to its layer.
 vec3 emissionAlongRay(vec3 origin, vec3 dir, float tMax, bool escaped, float bsdfPdf,
-                      bool cameraRay, uint lightCount, float selection) {
+                      bool cameraRay, uint lightCount, float selection, vec3 beta,
+                      uint pixelIndex) {
     vec3 sum = vec3(0.0);
     for (uint k = 0u; k < lightCount; ++k) {
         Light l = analyticLights[k];
@@ -102,6 +108,9 @@ vec3 emissionAlongRay(vec3 origin, vec3 dir, float tMax, bool escaped, float bsd
         float w = 1.0;
         if (!cameraRay) w = powerHeuristic(bsdfPdf, selection * lightPdf(l, origin, dir));
         sum += w * l.emissionArea.rgb;
+#ifdef WAVELIT_LIGHT_GROUPS
+        splatGroup(groupOfLight[k], pixelIndex, beta * (w * l.emissionArea.rgb));
+#endif
     }
     return sum;
 }
@@ -197,14 +206,18 @@ void main() {
         // Analytic lights crossed before the surface (or the sun, when the ray escapes).
         if (lightCount > 0u)
             L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
-                                         lightCount, selection);
+                                         lightCount, selection, beta, pixelIndex);
         if (!found) {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             if (neeOfDir)
                 w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, dsPdf(ds, dir));
 #endif
-            L += beta * (w * envRadiance(dir));
+            vec3 escaped = beta * (w * envRadiance(dir));
+            L += escaped;
+#ifdef WAVELIT_LIGHT_GROUPS
+            splatGroup(environmentGroup, pixelIndex, escaped);
+#endif
             break;
         }
         BvhTriangle T = bvhTriangles[tri];
@@ -221,6 +234,10 @@ void main() {
         uint m = min(uint(max(T.v0.w, 0.0)), materialCount - 1u);
         Material mat = materials[m];
         L += beta * mat.emissionType.rgb;
+#ifdef WAVELIT_LIGHT_GROUPS
+        if (any(notEqual(mat.emissionType.rgb, vec3(0.0))))
+            splatGroup(emissionGroup, pixelIndex, beta * mat.emissionType.rgb);
+#endif
         if (depth == bounces) break;
 
         Frame frame = frameFromNormal(ns);
@@ -247,22 +264,33 @@ void main() {
         if (lightCount > 0u) {
             float uSelect = psNext1D(rng);
             vec2 ul = psNext2D(rng);
-            L += beta * nextEvent(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a,
-                                  frame, wo, ng, next, uSelect, ul.x, ul.y, lightCount, selection,
-                                  triangleCount
+            vec3 direct = beta * nextEvent(brdfType, mat.baseColorRoughness.rgb,
+                                           mat.baseColorRoughness.a, frame, wo, ng, next, uSelect,
+                                           ul.x, ul.y, lightCount, selection, triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-                                  , ds, continuationFromSampler
+                                           , ds, continuationFromSampler
 #endif
             );
+            L += direct;
+#ifdef WAVELIT_LIGHT_GROUPS
+            splatGroup(groupOfLight[min(uint(uSelect * float(lightCount)), lightCount - 1u)],
+                       pixelIndex, direct);
+#endif
         }
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         if (envNee) {
             vec2 ue = psNext2D(rng);
             float ue3 = psNext1D(rng);
-            if (vertexNee)
-                L += beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
-                                         mat.baseColorRoughness.a, frame, wo, ng, next, ue.x, ue.y,
-                                         ue3, kind == kSamplerEnv, triangleCount);
+            if (vertexNee) {
+                vec3 envDirect = beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
+                                                     mat.baseColorRoughness.a, frame, wo, ng, next,
+                                                     ue.x, ue.y, ue3, kind == kSamplerEnv,
+                                                     triangleCount);
+                L += envDirect;
+#ifdef WAVELIT_LIGHT_GROUPS
+                splatGroup(environmentGroup, pixelIndex, envDirect);
+#endif
+            }
         }
 #endif
 

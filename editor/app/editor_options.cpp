@@ -22,7 +22,7 @@ QString defaultScenePath() {
 QString editorUsage() {
     return QStringLiteral(
         "usage: wavelit [SCENE.wlscene] [--script FILE.js] [--device auto|vulkan|cpu]\n"
-        "               [--sampler NAME] [--size WxH] [--max-spp N] [--validation]\n"
+        "               [--sampler NAME] [--size WxH] [--max-spp N] [--validation] [--light-mix]\n"
         "With no scene, opens the bundled default scene (%1).\n")
         .arg(defaultScenePath());
 }
@@ -66,6 +66,8 @@ util::Result<EditorOptions> parseEditorOptions(const QStringList& arguments) {
             }
         } else if (arg == "--validation") {
             options.render.validation = true;
+        } else if (arg == "--light-mix") {
+            options.render.lightMix = true;
         } else if (arg.startsWith('-')) {
             return usage("unknown option '" + arg + "'");
         } else if (sceneGiven) {

@@ -6,6 +6,7 @@
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
 #include "panels/outline_panel.h"
+#include "panels/lightmix_panel.h"
 #include "panels/property_panel.h"
 #include "panels/render_status_label.h"
 #include "viewport/camera_orbit_handler.h"
@@ -34,6 +35,7 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     : QMainWindow(parent), m_document(new SceneDocument(this)), m_errors(new ErrorReporter(this)),
       m_render(new RenderController(renderSettings, this)), m_viewport(new ViewportWidget(this)),
       m_outline(new OutlinePanel(this)), m_properties(new PropertyPanel(this)),
+      m_lightMix(new LightMixPanel(this)),
       m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document, m_errors)),
       m_cameraHandler(new CameraOrbitHandler(this)),
       m_autosave(new AutosaveController(m_document, m_errors, this)) {
@@ -42,6 +44,7 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     setCentralWidget(m_viewport);
     addDock(this, tr("Scene"), "outlineDock", m_outline, Qt::LeftDockWidgetArea);
     addDock(this, tr("Properties"), "propertyDock", m_properties, Qt::RightDockWidgetArea);
+    addDock(this, tr("LightMix"), "lightMixDock", m_lightMix, Qt::RightDockWidgetArea);
     statusBar()->addPermanentWidget(m_status);
     resize(1100, 700);
     wireDocument();
@@ -111,11 +114,20 @@ void MainWindow::wireDocument() {
     connect(m_document, &SceneDocument::openRepaired, this,
             [this](const QString& message) { m_errors->warn(tr("Open scene"), message); });
     connect(m_outline, &OutlinePanel::entitySelected, this, [this] { refreshProperties(); });
-    connect(m_properties, &PropertyPanel::editRequested, this, [this](const PropertyEdit& edit) {
+    auto applyEdit = [this](const PropertyEdit& edit) {
         if (auto status = m_document->apply(edit); !status) {
             m_errors->report(tr("Edit"), QString::fromStdString(status.error().message()));
             refreshProperties(); // show the value that is still in effect
         }
+    };
+    connect(m_properties, &PropertyPanel::editRequested, this, applyEdit);
+    connect(m_lightMix, &LightMixPanel::editRequested, this, applyEdit);
+    connect(m_outline, &OutlinePanel::muteRequested, this, [applyEdit](scene::EntityId id, bool muted) {
+        applyEdit({{EntityKind::Light, id}, "muted", muted});
+    });
+    connect(m_outline, &OutlinePanel::soloRequested, this, [this](scene::EntityId id) {
+        if (auto status = m_document->solo(id); !status)
+            m_errors->report(tr("Solo"), QString::fromStdString(status.error().message()));
     });
 }
 
@@ -148,9 +160,10 @@ void MainWindow::wireViewportHandlers() {
 }
 
 void MainWindow::refreshProperties() {
-    if (auto scene = m_document->scene())
+    if (auto scene = m_document->scene()) {
         m_properties->showEntity(*scene, m_outline->selectedEntity());
-    else
+        m_lightMix->setScene(*scene);
+    } else
         m_properties->clear();
 }
 

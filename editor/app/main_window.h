@@ -16,6 +16,7 @@ class EditorActions;
 class ErrorReporter;
 class OutlinePanel;
 class PropertyPanel;
+class LightMixPanel;
 class RenderStatusLabel;
 class SceneDocument;
 class ViewportWidget;
@@ -31,6 +32,7 @@ public:
     ViewportWidget* viewport() const { return m_viewport; }
     OutlinePanel* outline() const { return m_outline; }
     PropertyPanel* properties() const { return m_properties; }
+    LightMixPanel* lightMix() const { return m_lightMix; }
     ErrorReporter* errors() const { return m_errors; }
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
@@ -52,6 +54,7 @@ private:
     ViewportWidget* m_viewport;
     OutlinePanel* m_outline;
     PropertyPanel* m_properties;
+    LightMixPanel* m_lightMix;
     RenderStatusLabel* m_status;
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;

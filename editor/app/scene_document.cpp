@@ -182,6 +182,19 @@ void SceneDocument::onSaved() {
     emit modifiedChanged(isModified());
 }
 
+util::Status SceneDocument::solo(scene::EntityId light) {
+    if (!m_scene || !m_scene->findLight(light))
+        return util::makeError(util::ErrorKind::Invalid, "", "solo: no such light");
+    const std::shared_ptr<const scene::Scene> before = m_scene; // apply() replaces m_scene
+    m_undo->beginMacro(tr("solo %1").arg(QString::fromStdString(before->findLight(light)->name)));
+    util::Status status = util::okStatus();
+    for (const scene::Light& l : before->lighting.lights)
+        if (l.muted != (l.id != light) && status)
+            status = apply({{EntityKind::Light, l.id}, "muted", l.id != light});
+    m_undo->endMacro();
+    return status;
+}
+
 util::Status SceneDocument::apply(const PropertyEdit& edit) {
     if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
     auto applied = applyEdit(*m_scene, edit);

@@ -63,6 +63,9 @@ public:
     // Checks one edit against the registry and, if valid, pushes it onto the undo stack (which
     // applies it). Opening a scene clears the stack.
     util::Status apply(const PropertyEdit& edit);
+    // LightMix solo (docs/lightmix.md): mutes every other light and unmutes `light`, as one undo
+    // step (the environment is left as it is). Error: no scene, or not a light of it.
+    util::Status solo(scene::EntityId light);
     QUndoStack* undoStack() const { return m_undo; }
     // The camera's display exposure in EV: a Display edit (never restarts the render).
     util::Status setExposure(float ev);

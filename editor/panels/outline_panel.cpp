@@ -1,5 +1,6 @@
 #include "panels/outline_panel.h"
 
+#include <QGuiApplication>
 #include <QHeaderView>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
@@ -51,6 +52,21 @@ OutlinePanel::OutlinePanel(QWidget* parent) : QWidget(parent), m_tree(new QTreeW
     layout->addWidget(m_tree);
     connect(m_tree, &QTreeWidget::itemSelectionChanged, this,
             [this] { emit entitySelected(selectedEntity()); });
+    // Only user clicks reach here: setScene rebuilds the items with signals blocked.
+    connect(m_tree, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+        const QVariant data = item->data(0, kEntityRole);
+        if (column != 0 || !data.isValid() || data.value<EntityRef>().kind != EntityKind::Light)
+            return;
+        const scene::EntityId id = data.value<EntityRef>().id;
+        const bool solo = QGuiApplication::queryKeyboardModifiers() & Qt::AltModifier;
+        const bool muted = item->checkState(0) != Qt::Checked;
+        // Queued: the edit rebuilds the tree (setScene), which must not delete the item whose
+        // signal is being delivered.
+        QMetaObject::invokeMethod(this, [this, id, solo, muted] {
+            if (solo) emit soloRequested(id);
+            else emit muteRequested(id, muted);
+        }, Qt::QueuedConnection);
+    });
 }
 
 void OutlinePanel::clear() { m_tree->clear(); }
@@ -66,9 +82,12 @@ void OutlinePanel::setScene(const scene::Scene& scene) {
 
     auto* lighting = addGroup(m_tree, tr("Lighting"));
     addItem(lighting, tr("Environment"), {EntityKind::Environment, 0}, tr("environment"));
-    for (const auto& light : scene.lighting.lights)
-        addItem(lighting, QString::fromStdString(light.name), {EntityKind::Light, light.id},
-                lightTypeLabel(light.type));
+    for (const auto& light : scene.lighting.lights) {
+        auto* item = addItem(lighting, QString::fromStdString(light.name),
+                             {EntityKind::Light, light.id}, lightTypeLabel(light.type));
+        item->setCheckState(0, light.muted ? Qt::Unchecked : Qt::Checked);
+        item->setToolTip(0, tr("Check: emits; uncheck: mute; Alt-click: solo"));
+    }
 
     auto* objects = addGroup(m_tree, tr("Objects"));
     for (const auto& object : scene.objects)

@@ -1,6 +1,8 @@
 // OutlinePanel: the scene tree (Camera; Lighting -> Environment + lights; Objects; Materials).
 // Rebuilt from a scene snapshot; the selection is reported as an EntityRef, so nothing else
 // depends on tree items. Group rows ("Lighting", "Objects", "Materials") select nothing.
+// LightMix: each light has a check box (checked: it emits; unchecked: muted); clicking it asks to
+// mute or unmute the light, Alt-clicking it asks to solo it (docs/lightmix.md).
 #pragma once
 
 #include "panels/entity_ref.h"
@@ -31,6 +33,8 @@ public:
 
 signals:
     void entitySelected(std::optional<wavelit::scene::EntityRef> ref);
+    void muteRequested(wavelit::scene::EntityId light, bool muted);
+    void soloRequested(wavelit::scene::EntityId light);
 
 private:
     QTreeWidgetItem* findItem(EntityRef ref) const;

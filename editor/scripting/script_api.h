@@ -59,6 +59,13 @@ public:
     // Selects an entity in the outline (its properties show in the property panel).
     Q_INVOKABLE bool select(const QString& entity);
     Q_INVOKABLE int samples() const;
+    // LightMix (docs/lightmix.md; script_api_lightmix.cpp). setMute: the light's `muted` property,
+    // one undo step. solo: mutes every other light and unmutes this one, one undo step (the
+    // environment is left as it is). frameStatus: what the latest frame's update did ("remixed:
+    // no restart" when an edit was shown by recombining light-group layers, `wavelit --light-mix`).
+    Q_INVOKABLE bool setMute(const QString& light, bool muted);
+    Q_INVOKABLE bool solo(const QString& light);
+    Q_INVOKABLE QString frameStatus() const;
     Q_INVOKABLE QString scenePath() const;
     Q_INVOKABLE QStringList entities() const; // every outline entry's display name
     Q_INVOKABLE QString environment(const QString& name) const; // an environment variable

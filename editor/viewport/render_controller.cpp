@@ -58,6 +58,7 @@ void RenderController::submit(RenderJob job) {
     job.options.device = m_settings.device;
     job.options.sampler = m_settings.sampler;
     job.options.validation = m_settings.validation;
+    job.options.lightGroups = m_settings.lightMix;
     m_latest = RenderFrame{};
     // Counted before it is queued: the running pass stops at its next piece to take it.
     m_shared->pendingRequests.fetch_add(1);

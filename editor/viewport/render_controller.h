@@ -32,6 +32,11 @@ struct RenderSettings {
     int height = 0;
     int maxSamplesPerPixel = 0; // 0: progressive forever
     bool validation = false;
+    // LightMix (docs/lightmix.md): render light-group layers, and show an edit of a light's
+    // intensity, colour or mute or of the environment's intensity by recombining them on the
+    // next frame (render/session/light_remix.h) instead of restarting. Costs groups x pixels x
+    // 12 bytes of device memory.
+    bool lightMix = false;
 };
 
 class RenderController : public QObject {

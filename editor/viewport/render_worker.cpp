@@ -2,6 +2,7 @@
 
 #include "viewport/tone_map.h"
 
+#include "render/session/light_remix.h"
 #include "scene/scene_io.h"
 
 #include <QTimer>
@@ -13,7 +14,8 @@ namespace {
 bool sameSessionOptions(const render::RenderOptions& a, const render::RenderOptions& b) {
     return a.width == b.width && a.height == b.height && a.bounces == b.bounces &&
            a.seed == b.seed && a.device == b.device && a.sampler == b.sampler &&
-           a.vulkanDevice == b.vulkanDevice && a.validation == b.validation;
+           a.vulkanDevice == b.vulkanDevice && a.validation == b.validation &&
+           a.lightGroups == b.lightGroups;
 }
 
 QString toQString(const util::Error& error) { return QString::fromStdString(error.message()); }
@@ -103,9 +105,38 @@ void RenderWorker::step() {
     if (!last) scheduleStep();
 }
 
+bool RenderWorker::tryRemix(const RenderJob& job) {
+    if (!job.options.lightGroups || !m_session || !m_renderedScene || !job.scene ||
+        !sameSessionOptions(m_sessionOptions, job.options))
+        return false;
+    auto weights = render::remixWeights(*m_renderedScene, *job.scene);
+    if (!weights) return false;
+    m_weights = std::move(*weights);
+    m_generation = job.generation;
+    m_maxSpp = job.maxSamplesPerPixel;
+    m_remixed = true;
+    // The next display frame: now, from the samples so far (none yet: the first pass publishes);
+    // its status says what it cost (layer read-back, recombination, tone mapping).
+    if (m_session->samplesPerPixel() > 0) {
+        m_remixTimer.start();
+        publish();
+        m_remixTimer.invalidate();
+    }
+    return true;
+}
+
+util::Result<util::ImageRGB> RenderWorker::sessionImage() {
+    if (!m_sessionOptions.lightGroups) return m_session->image();
+    auto layers = m_session->groupImages();
+    if (!layers) return layers.error();
+    return render::mixGroupLayers(*layers, m_weights);
+}
+
 bool RenderWorker::startPendingJob() {
     RenderJob job = std::move(*m_pending);
     m_pending.reset();
+    if (tryRemix(job)) return true;
+    m_remixed = false;
     m_generation = job.generation;
     m_maxSpp = job.maxSamplesPerPixel;
     m_publishedSpp = -1;
@@ -123,13 +154,22 @@ bool RenderWorker::startPendingJob() {
         }
         job.scene = std::move(completed);
     }
+    // LightMix: the session renders every light unmuted (a muted light's layer stays, weight 0).
+    std::shared_ptr<const scene::Scene> rendered = job.scene;
+    if (job.options.lightGroups) {
+        rendered = std::make_shared<const scene::Scene>(render::remixBaseScene(*job.scene));
+        m_weights = render::remixWeights(*rendered, *job.scene).value_or(std::vector<glm::vec3>{});
+    }
+    m_renderedScene = job.options.lightGroups ? rendered : nullptr;
     if (m_session && sameSessionOptions(m_sessionOptions, job.options)) {
         // An edit of the scene the session holds updates only what it changed; anything else
         // (a newly opened scene, a session that missed a job) swaps in the whole scene.
+        // (LightMix sessions hold remixBaseScene, which the change set does not lead from.)
         const bool incremental = job.changes && m_sessionGeneration != 0 &&
-                                 m_sessionGeneration == job.baseGeneration;
+                                 m_sessionGeneration == job.baseGeneration &&
+                                 !job.options.lightGroups;
         const util::Status status = incremental ? m_session->applyChanges(*job.scene, *job.changes)
-                                                : m_session->setScene(*job.scene);
+                                                : m_session->setScene(*rendered);
         if (!status) {
             fail(toQString(status.error()));
             return false;
@@ -138,7 +178,7 @@ bool RenderWorker::startPendingJob() {
         return true;
     }
     m_session.reset(); // release the old device before creating the next one
-    auto created = render::RenderSession::create(*job.scene, job.options);
+    auto created = render::RenderSession::create(*rendered, job.options);
     if (!created) {
         fail(toQString(created.error()));
         return false;
@@ -151,7 +191,7 @@ bool RenderWorker::startPendingJob() {
 }
 
 void RenderWorker::publish() {
-    auto image = m_session->image();
+    auto image = sessionImage();
     if (!image) {
         fail(toQString(image.error()));
         return;
@@ -167,6 +207,11 @@ void RenderWorker::publish() {
     frame.generation = m_generation;
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
+    if (m_remixed)
+        frame.lastUpdate = m_remixTimer.isValid()
+                               ? QStringLiteral("remixed: no restart (frame in %1 ms)")
+                                     .arg(double(m_remixTimer.nsecsElapsed()) * 1e-6, 0, 'f', 2)
+                               : QStringLiteral("remixed: no restart");
     m_publishedSpp = frame.samplesPerPixel;
     m_sinceFrame.restart();
     emitFrame(std::move(frame));
@@ -183,6 +228,7 @@ void RenderWorker::fail(const QString& message) {
     // creates a fresh one.
     m_session.reset();
     m_sessionGeneration = 0;
+    m_renderedScene.reset();
     m_lastFrame = RenderFrame{};
     emit failed(message, m_generation);
 }

@@ -15,6 +15,12 @@
 // holds the scene the change set starts from; a newer edit replacing one not yet started merges
 // into it. Otherwise the whole scene is swapped in (setScene).
 //
+// LightMix (RenderSettings::lightMix, docs/lightmix.md): the session renders light-group layers of
+// remixBaseScene (every light unmuted) and each frame is their weighted sum. A job whose scene
+// differs from the rendered one only in light intensity, colour, mute or the environment's
+// intensity (remixWeights) keeps the session and its samples: the weights change and the frame is
+// re-published at once; any other edit swaps in the new scene.
+//
 // Display: the worker tone-maps each published frame (tone_map.h) with RenderShared::exposureEv
 // into RenderFrame::display, so the UI thread only paints. retoneMap() re-publishes the latest
 // frame's samples with the current exposure (a Display edit: no restart, no lost samples).
@@ -34,6 +40,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace wavelit::editor {
 
@@ -72,6 +79,9 @@ private:
     void scheduleStep();
     void step();
     bool startPendingJob(); // false after reporting an error
+    // LightMix: shows `job` by new weights over the session's layers; false when it cannot.
+    bool tryRemix(const RenderJob& job);
+    util::Result<util::ImageRGB> sessionImage(); // the beauty, or the LightMix weighted sum
     void publish();
     void emitFrame(RenderFrame frame);
     void fail(const QString& message);
@@ -88,6 +98,12 @@ private:
     bool m_stepScheduled = false;
     QElapsedTimer m_sinceFrame;
     RenderFrame m_lastFrame; // the latest published frame of m_generation (for retoneMap)
+    // LightMix: the scene the session renders, the weights of the shown scene's groups, and
+    // whether the current generation is a remix (the status label says so).
+    std::shared_ptr<const scene::Scene> m_renderedScene;
+    std::vector<glm::vec3> m_weights;
+    bool m_remixed = false;
+    QElapsedTimer m_remixTimer; // valid while tryRemix publishes (the frame says its cost)
 };
 
 } // namespace wavelit::editor

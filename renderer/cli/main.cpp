@@ -14,7 +14,9 @@ const char* kUsage =
     "  render SCENE -o OUT.exr|png [--spp N] [--time SECONDS] [--sampler NAME]\n"
     "         [--width W --height H] [--seed S] [--bounces B] [--device auto|cpu|vulkan]\n"
     "         [--report REPORT.json] [--also OUT2.exr|png] [--passes FIRST:COUNT] [--mpi]\n"
+    "         [--light-groups]   (EXR: beauty R,G,B + one <group>.R,.G,.B layer per light group)\n"
     "  merge PART.exr [PART.exr ...] -o OUT.exr\n"
+    "  mix IN.exr -o OUT.exr|png --weights GROUP=W|GROUP=R:G:B[,...] [--exposure EV]\n"
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
     "  validate FILE\n"
     "  wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]\n"
@@ -39,6 +41,7 @@ int main(int argc, char** argv) {
     if (command == "validate") return wavelit::cli::runValidate(rest);
     if (command == "wavelet") return wavelit::cli::runWavelet(rest);
     if (command == "bench") return wavelit::cli::runBench(rest);
+    if (command == "mix") return wavelit::cli::runMix(rest);
     std::fprintf(stderr, "wavelit-cli: unknown command '%s'\n%s", command.c_str(), kUsage);
     return 2;
 }

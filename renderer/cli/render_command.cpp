@@ -13,6 +13,7 @@
 // names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/light_group_output.h"
 #include "cli/mpi_job.h"
 #include "cli/partial_render.h"
 #include "cli/pass_plan.h"
@@ -201,7 +202,7 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     std::set<std::string> flags = renderValueFlags();
     flags.insert({"-o", "--also", "--spp", "--time", "--report", "--trace-outliers", "--outliers",
                   "--passes"});
-    auto args = Args::parse(argv, flags, {"--mpi"});
+    auto args = Args::parse(argv, flags, {"--mpi", "--light-groups"});
     if (!args)
         return reportError(args.error());
     if (args->positional().size() != 1)
@@ -219,6 +220,8 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
             return reportError(
                 makeError(ErrorKind::Usage, path, "output must end in .exr or .png"));
     }
+    if (auto groups = checkLightGroupFlags(*args, *output); !groups)
+        return reportError(groups.error());
     auto spp = args->intValue("--spp", kDefaultSpp, 1, kMaxSpp);
     auto seconds = args->doubleValue("--time", 0.0, 0.0, 1e7);
     if (!spp)
@@ -267,6 +270,10 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
         return reportError(parsed.error());
     render::RenderOptions options = *parsed;
     options.firstPass = local.first;
+    options.lightGroups = args->has("--light-groups");
+    if (options.lightGroups) // memory said up front (docs/lightmix.md)
+        std::printf("%s\n", describeLightGroups(render::lightGroupsOf(*scene), options.width,
+                                                options.height).c_str());
 
     util::Timer total;
     auto session = render::RenderSession::create(*scene, options);
@@ -309,7 +316,10 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
     const scene::ExrAttributes attributes =
         renderAttributes(renderIdentity(*scene, scenePath, options, stats.deviceName), rendered);
     for (const std::string& path : outputs)
-        if (auto written = scene::writeImage(path, *image, scene->camera.exposureEv, attributes);
+        if (auto written = options.lightGroups && lowerExtension(path) == ".exr"
+                               ? writeLightGroupExr(path, **session, *image, attributes)
+                               : scene::writeImage(path, *image, scene->camera.exposureEv,
+                                                   attributes);
             !written)
             return reportError(written.error());
     const std::string ranks =

@@ -238,7 +238,9 @@ util::Status readProperties(const Json& obj, EntityKind kind, void* entity, cons
 
 void writeProperties(Json& obj, EntityKind kind, const void* entity) {
     for (const PropertyInfo& info : properties(kind))
-        if (propertyApplies(info, entity)) obj[info.name] = valueToJson(info.get(entity));
+        if (propertyApplies(info, entity) &&
+            !(info.omitWhenDefault && info.get(entity) == info.defaultValue))
+            obj[info.name] = valueToJson(info.get(entity));
 }
 
 } // namespace wavelit::scene

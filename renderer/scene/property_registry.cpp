@@ -30,6 +30,7 @@ struct Decl {
     Decl& noun(const char* n) { p.enumNoun = n; return *this; }
     Decl& lights(std::vector<LightType> t) { p.lightTypes = std::move(t); return *this; }
     Decl& required() { p.required = true; return *this; }
+    Decl& omitWhenDefault() { p.omitWhenDefault = true; return *this; }
 };
 
 // Declares a property backed directly by a member (member type = the variant alternative).
@@ -199,6 +200,9 @@ std::vector<PropertyInfo> declareLight() {
         .range(0.0, 90.0).lights({T::Spot}).tip("Cut-off half angle").cost(R, F);
     field(l, K, "angularDiameter", "Angular diameter", PropertyType::Float, &Light::angularDiameterDeg)
         .unit("deg").range(0.0, 90.0).lights({T::Sun}).tip("Apparent size (the Sun: 0.53)").cost(R, F);
+    field(l, K, "group", "Light group", PropertyType::String, &Light::group).omitWhenDefault()
+        .tip("LightMix layer shared with lights of the same group (empty: its own)").cost(R, F);
+    field(l, K, "muted", "Muted", PropertyType::Bool, &Light::muted).omitWhenDefault().tip("Emits nothing").cost(R, F);
     return l;
 }
 

@@ -64,6 +64,7 @@ struct PropertyInfo {
     std::vector<LightType> lightTypes;     // Light properties: the types it applies to (empty: all)
     EntityKind refersTo = EntityKind::Material; // IdRef: the kind it names
     bool required = false; // a file must state it (no sensible default: mesh, material, type)
+    bool omitWhenDefault = false; // JSON leaves it out at its default (keeps older files as they were)
     // Accessors on the entity struct the kind names (Camera, Material, Object, Environment,
     // Light, RenderDefaults). set() expects a value that passed checkValue().
     std::function<PropertyValue(const void*)> get;

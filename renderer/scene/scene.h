@@ -120,6 +120,12 @@ struct Light {
     float coneInnerDeg = 20.0f;              // Spot full-intensity half angle
     float coneOuterDeg = 30.0f;              // Spot cut-off half angle
     float angularDiameterDeg = 0.53f;        // Sun
+    // LightMix layer (docs/lightmix.md): lights with the same group share one radiance layer;
+    // empty = the light's own layer, named after the light.
+    std::string group{};
+    // Muted: emits nothing (LightMix mute, docs/lightmix.md); kept in the file so the setup can be
+    // unmuted later with its intensity and colour intact.
+    bool muted = false;
     std::string extras{};
 };
 

@@ -82,13 +82,21 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     // The samplers' constants and table layouts, generated from the C++ ones.
     for (std::string& define : samplerShaderDefines())
         compile.defines.push_back(std::move(define));
+    // LightMix layers: two bindings after the last one (gpu_path_tracer_impl.h).
+    pt->m_groupBinding = pt->usesDirectionSamplers() ? 10u : 7u;
+    if (options.lightGroups) {
+        compile.defines.push_back("WAVELIT_LIGHT_GROUPS=1");
+        compile.defines.push_back("WAVELIT_GROUP_INFO_BINDING=" + std::to_string(pt->m_groupBinding));
+        compile.defines.push_back("WAVELIT_GROUP_LAYERS_BINDING=" +
+                                  std::to_string(pt->m_groupBinding + 1));
+    }
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     auto spirv = compileFileWithBrdfDispatch(shaderPath, compile);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->usesDirectionSamplers() ? 10 : 7,
+    std::vector<BindingKind> bindings(pt->m_groupBinding + (options.lightGroups ? 2 : 0),
                                       BindingKind::StorageBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;

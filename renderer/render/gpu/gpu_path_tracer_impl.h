@@ -10,6 +10,7 @@
 #include "render/gpu/gpu_scene_data.h"
 #include "render/gpu/render_limits.h"
 #include "render/session/integrator.h"
+#include "render/session/light_groups.h"
 #include "render/session/render_options.h"
 #include "render/sampling/sampler_tables_cache.h"
 #include "scene/bvh.h"
@@ -44,6 +45,12 @@ enum Binding : uint32_t {
     kSamplerWords
 };
 
+// LightMix (shaders/common/light_groups.glsl): with RenderOptions::lightGroups two more bindings
+// follow the last of the list above (7 and 8 for `bsdf`, 10 and 11 with samplers): the group info
+// (this packing) and the layers. kNoLightGroup: no emissive material.
+inline constexpr uint32_t kNoLightGroup = 0xFFFFFFFFu;
+std::vector<uint32_t> packGpuLightGroups(const LightGroups& groups, uint64_t pixels);
+
 // path_tracer.comp's push constant: what its PathSampler needs besides the pixel.
 struct PassPush {
     uint32_t seedKey; // util::PathSampler::seedKey(options.seed)
@@ -62,6 +69,7 @@ public:
     util::Status renderPass() override;
     int samplesPerPixel() const override { return m_passes; }
     util::Result<util::ImageRGB> image() override;
+    util::Result<std::vector<util::ImageRGB>> groupImages() override;
     void resetAccumulation() override;
     std::string deviceName() const override { return "vulkan: " + m_context->deviceName(); }
     IntegratorTimings timings() const override { return m_timings; }
@@ -96,6 +104,9 @@ private:
                              const UploadMask& mask,
                              const std::vector<scene::Invalidation>* changed);
     bool usesDirectionSamplers() const { return m_options.sampler != SamplerKind::Bsdf; }
+    // With light groups: (re)creates the info and layer buffers for `scene`'s groups (sizes
+    // already checked by uploadScene) and writes the info; a new layer buffer starts at zero.
+    util::Status uploadLightGroups(const scene::Scene& scene);
     // Checks the accumulation buffer and `buffers` against the device's limits before any of
     // them is allocated (render_limits.h).
     util::Status checkPlan(std::vector<GpuBufferPlan> buffers) const;
@@ -126,6 +137,10 @@ private:
     // What the uploaded sampler buffers need in the params block (GpuParams::samplerInfo/Env).
     uint32_t m_samplerInfo[4] = {0, 0, 0, 0};
     float m_samplerEnvMean = 0.0f;
+    // LightMix layers (RenderOptions::lightGroups only; gpu_path_tracer_groups.cpp).
+    vk::Buffer m_groupInfo, m_groupLayers;
+    uint32_t m_groupBinding = 0; // the info's binding; the layers' is the next
+    size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;

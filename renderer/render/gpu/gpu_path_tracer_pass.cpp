@@ -87,6 +87,7 @@ util::Result<util::ImageRGB> GpuPathTracer::image() {
 void GpuPathTracer::resetAccumulation() {
     // renderPass waits for its fence, so no dispatch is in flight here.
     m_accumulation.fill(0);
+    if (m_groupLayers.handle() != VK_NULL_HANDLE) m_groupLayers.fill(0);
     m_passes = 0;
     m_nextTile = 0; // an unfinished pass is dropped with the sums it had added
     m_passElapsed = 0.0;

@@ -163,6 +163,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (usesDirectionSamplers() && !uploadSamplers)
             for (const vk::Buffer* kept : {&m_envTable, &m_samplerMaterials, &m_samplerWords})
                 plans.push_back({"kept sampler buffer", kept->size(), 0, "", "", ""});
+        if (m_options.lightGroups)
+            plans.push_back(gpuLightGroupPlan(lightGroupsOf(scene).size(), m_options.width,
+                                              m_options.height));
         if (auto fits = checkPlan(std::move(plans)); !fits)
             return fits.error();
     }
@@ -182,6 +185,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
             return buffer.error();
         fresh.emplace_back(i, std::move(buffer.value()));
     }
+    if (m_options.lightGroups)
+        if (auto groups = uploadLightGroups(scene); !groups) return groups;
     for (auto& [i, buffer] : fresh) {
         *uploads[i].target = std::move(buffer);
         m_kernel.bind(uploads[i].binding, *uploads[i].target);

@@ -56,6 +56,16 @@ GpuBufferPlan gpuAccumulationPlan(int width, int height) {
             "the render size " + sizeText(width, height), "render at a smaller size"};
 }
 
+GpuBufferPlan gpuLightGroupPlan(size_t groups, int width, int height) {
+    const uint64_t pixels = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0));
+    return {"light groups", uint64_t(groups) * pixels * 3 * sizeof(float), uint64_t(groups) * pixels,
+            "group pixels",
+            "--light-groups (" + std::to_string(groups) + " layers of " + sizeText(width, height) +
+                ", 12 bytes a pixel each)",
+            "merge lights into fewer groups (the light's `group` property), render without "
+            "--light-groups, or render at a smaller size"};
+}
+
 util::Status checkGpuMemoryPlan(const GpuMemoryPlan& plan, const GpuDeviceLimits& limits) {
     const std::string device = limits.deviceName.empty() ? "the Vulkan device" : limits.deviceName;
     // Workgroups: a pass dispatches ceil(W / 8) x ceil(H / 8) of them.
@@ -139,17 +149,20 @@ GpuDeviceLimits gpuDeviceLimits(const vk::Context& context) {
     return limits;
 }
 
-util::Status checkCpuImageMemory(int width, int height, uint64_t physicalBytes) {
-    constexpr uint64_t kBytesPerPixel = 3 * sizeof(double) + 3 * sizeof(float);
+util::Status checkCpuImageMemory(int width, int height, uint64_t physicalBytes,
+                                 size_t lightGroups) {
+    const uint64_t bytesPerPixel =
+        3 * sizeof(double) + 3 * sizeof(float) + uint64_t(lightGroups) * 3 * sizeof(double);
     const uint64_t pixels = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0));
-    const uint64_t bytes = pixels * kBytesPerPixel;
+    const uint64_t bytes = pixels * bytesPerPixel;
     const uint64_t budget = physicalBytes / 2;
     if (physicalBytes == 0 || bytes <= budget)
         return util::okStatus();
-    const uint64_t maxPixels = budget / kBytesPerPixel;
+    const uint64_t maxPixels = budget / bytesPerPixel;
     return limitError("the render size " + sizeText(width, height) +
                       " is too big for the CPU tracer: its image buffers need " + formatBytes(bytes) +
-                      " (" + std::to_string(kBytesPerPixel) + " bytes a pixel), " +
+                      (lightGroups ? " with " + std::to_string(lightGroups) + " light groups" : "") +
+                      " (" + std::to_string(bytesPerPixel) + " bytes a pixel), " +
                       formatBytes(bytes - budget) + " more than half of this machine's " +
                       formatBytes(physicalBytes) + " of memory; render at a smaller size: at most " +
                       std::to_string(maxPixels) + " pixels fit, e.g. " +

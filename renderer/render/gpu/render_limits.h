@@ -11,6 +11,7 @@
 
 #include "util/result.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -56,9 +57,15 @@ util::Status checkGpuMemoryPlan(const GpuMemoryPlan& plan, const GpuDeviceLimits
 // The limits of the context's device (the heap is the one Buffer::create allocates from).
 GpuDeviceLimits gpuDeviceLimits(const vk::Context& context);
 
-// The CPU tracer keeps a double RGB sum and a float RGB image per pixel (36 bytes); a size whose
-// buffers exceed half of physicalBytes is refused (ErrorKind::Invalid). physicalBytes 0: unchecked.
-util::Status checkCpuImageMemory(int width, int height, uint64_t physicalBytes);
+// The CPU tracer keeps a double RGB sum and a float RGB image per pixel (36 bytes), and with
+// light groups a double RGB sum per group and pixel (24 bytes each); a size whose buffers exceed
+// half of physicalBytes is refused (ErrorKind::Invalid). physicalBytes 0: unchecked.
+util::Status checkCpuImageMemory(int width, int height, uint64_t physicalBytes,
+                                 size_t lightGroups = 0);
+
+// The LightMix layers of the Vulkan tracer (float RGB per group and pixel, 12 bytes each:
+// light_groups.h), as one storage buffer.
+GpuBufferPlan gpuLightGroupPlan(size_t groups, int width, int height);
 // The machine's physical memory in bytes; 0 when unknown.
 uint64_t physicalMemoryBytes();
 

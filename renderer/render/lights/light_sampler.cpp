@@ -53,7 +53,9 @@ float sphereOneMinusCos(float r2, float d2) {
 LightConstants deriveLightConstants(const scene::Light& light) {
     LightConstants c;
     c.type = light.type;
-    const glm::vec3 power = light.color * light.intensity;
+    // A muted light (LightMix) emits nothing but stays in the set: selection and the draws of
+    // every path stay those of the unmuted scene.
+    const glm::vec3 power = light.muted ? glm::vec3(0.0f) : light.color * light.intensity;
     c.position = light.position;
     const float len = glm::length(light.direction);
     if (len > 0.0f) c.normal = light.direction / len;

@@ -32,9 +32,12 @@ float LightSet::lightWeight(const LightSampler& light, float lightPdf, float bsd
 }
 
 glm::vec3 LightSet::emissionAlongRay(const glm::vec3& origin, const glm::vec3& dir, float tMax,
-                                     float bsdfPdf, bool cameraRay, LightStrategy strategy) const {
+                                     float bsdfPdf, bool cameraRay, LightStrategy strategy,
+                                     glm::vec3* perLight) const {
     glm::vec3 sum(0.0f);
-    for (const LightSampler& light : m_lights) {
+    for (size_t k = 0; k < m_lights.size(); ++k) {
+        const LightSampler& light = m_lights[k];
+        if (perLight) perLight[k] = glm::vec3(0.0f);
         auto hit = light.evalHit(origin, dir, tMax);
         if (!hit) continue;
         float w = 1.0f;
@@ -48,6 +51,7 @@ glm::vec3 LightSet::emissionAlongRay(const glm::vec3& origin, const glm::vec3& d
             }
         }
         sum += w * hit->radiance;
+        if (perLight) perLight[k] = w * hit->radiance;
     }
     return sum;
 }

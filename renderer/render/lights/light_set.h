@@ -52,9 +52,12 @@ public:
 
     // Σ over lights crossed by origin + t·dir, t in (0, tMax) (tMax = infinity: the ray escaped,
     // so the sun counts) of weight × emitted radiance. bsdfPdf: the solid-angle pdf with which the
-    // previous vertex sampled dir; cameraRay: no previous vertex, weight 1.
+    // previous vertex sampled dir; cameraRay: no previous vertex, weight 1. perLight (size()
+    // entries, or nullptr): each light's term of the sum, written for every light (0 if missed),
+    // for the LightMix layers (light_groups.h).
     glm::vec3 emissionAlongRay(const glm::vec3& origin, const glm::vec3& dir, float tMax,
-                               float bsdfPdf, bool cameraRay, LightStrategy strategy) const;
+                               float bsdfPdf, bool cameraRay, LightStrategy strategy,
+                               glm::vec3* perLight = nullptr) const;
 
 private:
     std::vector<LightSampler> m_lights;

@@ -109,6 +109,8 @@ util::Status CpuPathTracer::swapScene(std::shared_ptr<const scene::Scene> scene,
     m_camera = CpuCamera(m_scene->camera, m_options.width, m_options.height);
     m_environment = CpuEnvironment(m_scene->lighting.environment);
     m_lights = LightSet(m_scene->lighting.lights);
+    m_groups = lightGroupsOf(*m_scene);
+    m_groupSum.assign(m_options.lightGroups ? m_groups.size() * m_sum.size() : 0, glm::dvec3(0.0));
     m_samplerTables = std::move(tables->tables);
     m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
     const SamplerTablesRebuilds& after = m_samplerCache.rebuilds();
@@ -127,8 +129,11 @@ CpuPathTracer::CpuPathTracer(std::shared_ptr<const scene::Scene> scene,
       m_camera(m_scene->camera, options.width, options.height),
       m_environment(m_scene->lighting.environment), m_lights(m_scene->lighting.lights),
       m_threadCount(threadCount),
-      m_sum(size_t(options.width) * size_t(options.height), glm::dvec3(0.0)) {
+      m_sum(size_t(options.width) * size_t(options.height), glm::dvec3(0.0)),
+      m_groups(lightGroupsOf(*m_scene)) {
     m_timings.bvhBuildSeconds = m_bvh->buildSeconds;
+    // Layers only when asked for (architecture.md §7: model only what a render needs).
+    if (options.lightGroups) m_groupSum.assign(m_groups.size() * m_sum.size(), glm::dvec3(0.0));
 }
 
 const CpuPathTracer::ResolvedMaterial& CpuPathTracer::material(float index) const {
@@ -245,13 +250,21 @@ util::Status CpuPathTracer::renderPass() {
     const int tiles = tilesX * tilesY;
     const int pass = m_options.firstPass + m_passes;
     std::atomic<int> next{0};
-    // Workers write disjoint pixels of m_sum: no locking.
+    const size_t pixels = m_sum.size();
+    const size_t groupCount = m_groupSum.empty() ? 0 : m_groups.size();
+    // Workers write disjoint pixels of m_sum (and of each group's layer): no locking.
     auto worker = [&] {
+        std::vector<glm::vec3> groups(groupCount);
+        glm::vec3* splat = groupCount ? groups.data() : nullptr;
         for (int tile = next++; tile < tiles; tile = next++) {
             int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, h); ++y)
-                for (int x = x0; x < std::min(x0 + kTileSize, w); ++x)
-                    m_sum[size_t(y) * size_t(w) + size_t(x)] += glm::dvec3(samplePixel(x, y, pass));
+                for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
+                    const size_t p = size_t(y) * size_t(w) + size_t(x);
+                    m_sum[p] += glm::dvec3(samplePixel(x, y, pass, nullptr, splat));
+                    for (size_t g = 0; g < groupCount; ++g)
+                        m_groupSum[g * pixels + p] += glm::dvec3(groups[g]);
+                }
         }
     };
     const int n = std::min(m_threadCount, tiles);
@@ -273,8 +286,23 @@ util::Result<util::ImageRGB> CpuPathTracer::image() {
     return img;
 }
 
+util::Result<std::vector<util::ImageRGB>> CpuPathTracer::groupImages() {
+    std::vector<util::ImageRGB> layers;
+    if (m_groupSum.empty()) return layers;
+    const size_t pixels = m_sum.size();
+    const double inv = m_passes > 0 ? 1.0 / m_passes : 0.0;
+    for (size_t g = 0; g < m_groups.size(); ++g) {
+        util::ImageRGB img(m_options.width, m_options.height);
+        for (size_t p = 0; p < pixels; ++p)
+            img.pixels[p] = glm::vec3(m_groupSum[g * pixels + p] * inv);
+        layers.push_back(std::move(img));
+    }
+    return layers;
+}
+
 void CpuPathTracer::resetAccumulation() {
     std::fill(m_sum.begin(), m_sum.end(), glm::dvec3(0.0));
+    std::fill(m_groupSum.begin(), m_groupSum.end(), glm::dvec3(0.0));
     m_passes = 0;
     m_timings.passSeconds = 0.0;
 }

@@ -28,6 +28,7 @@
 #include "render/session/integrator.h"
 #include "render/lights/light_set.h"
 #include "render/reference/path_record.h"
+#include "render/session/light_groups.h"
 #include "render/session/render_options.h"
 #include "render/sampling/sampler_tables_cache.h"
 #include "scene/bvh.h"
@@ -80,7 +81,14 @@ public:
     // Deterministic: a function of (seed, pass, pixel) only. Public so tests (and GPU-vs-CPU
     // comparisons) can look at individual paths.
     // With `record`, also writes the path down term by term (path_record.h; the outlier tracer).
-    glm::vec3 samplePixel(int x, int y, int pass, PathRecord* record = nullptr) const;
+    // With `groups` (lightGroups().size() entries, overwritten): the same radiance split by the
+    // light group of the emitter each term comes from (light_groups.h); they sum to the result.
+    glm::vec3 samplePixel(int x, int y, int pass, PathRecord* record = nullptr,
+                          glm::vec3* groups = nullptr) const;
+    // The scene's light groups (the layers groupImages() returns, and samplePixel's `groups`).
+    const LightGroups& lightGroups() const { return m_groups; }
+    // With RenderOptions::lightGroups: each layer's mean; without: an empty list.
+    util::Result<std::vector<util::ImageRGB>> groupImages() override;
 
     int threadCount() const { return m_threadCount; }
     // The direction sampler's report (env resolution, per-material choices); empty for `bsdf`.
@@ -162,6 +170,10 @@ private:
     LightStrategy m_lightStrategy = LightStrategy::Mis;
     int m_threadCount;
     std::vector<glm::dvec3> m_sum;
+    // LightMix: the groups of the current scene (always known: samplePixel's `groups`) and, with
+    // RenderOptions::lightGroups, their sums, group-major (group g's pixel p at g·W·H + p).
+    LightGroups m_groups;
+    std::vector<glm::dvec3> m_groupSum;
     int m_passes = 0;
     IntegratorTimings m_timings;
     UpdateCounts m_lastUpdate;

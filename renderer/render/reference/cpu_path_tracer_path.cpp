@@ -24,7 +24,8 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 } // namespace
 
-glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record) const {
+glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
+                                     glm::vec3* groups) const {
     const uint64_t pixelIndex = uint64_t(y) * uint64_t(m_options.width) + uint64_t(x);
     util::PathSampler rng(util::PathSampler::seedKey(m_options.seed), uint32_t(pixelIndex),
                           uint32_t(pass));
@@ -42,6 +43,13 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
     // The env NEE technique of the vertex that drew `dir` (issue 20), kept so that env light the
     // continuation finds is MIS-weighted against it; empty: that vertex did no env NEE.
     std::optional<DirectionSampler> neeOfDir;
+    // LightMix: each term below is also added to its emitter's group (docs/estimator.md "Light
+    // groups"), the same float value that is added to L.
+    if (groups) std::fill(groups, groups + m_groups.size(), glm::vec3(0.0f));
+    auto splat = [&](int group, const glm::vec3& term) {
+        if (groups && group >= 0) groups[group] += term;
+    };
+    std::vector<glm::vec3> perLight(groups ? m_lights.size() : 0);
     if (record) {
         *record = PathRecord{};
         record->x = x;
@@ -65,10 +73,12 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             scene::intersect(*m_bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit);
         // Analytic lights crossed before the surface (or the sun, when the ray escapes).
         if (!m_lights.empty()) {
-            const glm::vec3 e = m_lights.emissionAlongRay(origin, dir, found ? hit.t : kInfinity,
-                                                          scatterPdfOfDir, depth == 0,
-                                                          m_lightStrategy);
+            const glm::vec3 e = m_lights.emissionAlongRay(
+                origin, dir, found ? hit.t : kInfinity, scatterPdfOfDir, depth == 0,
+                m_lightStrategy, groups ? perLight.data() : nullptr);
             L += beta * e;
+            for (size_t k = 0; k < perLight.size(); ++k)
+                splat(m_groups.groupOfLight[k], beta * perLight[k]);
             addEvent(from, "light-hit", techniqueOfDir, scatterPdfOfDir, {}, 1.0, fcosOfDir, e,
                      betaBeforeDir, beta * e);
         }
@@ -82,6 +92,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             }
             const glm::vec3 e = m_environment.radiance(dir);
             L += beta * (w * e);
+            splat(m_groups.environmentGroup, beta * (w * e));
             if (record)
                 addEvent(from, "env-escape", techniqueOfDir, scatterPdfOfDir,
                          {{"continuation", scatterPdfOfDir}, {"nee", neePdf}}, w, fcosOfDir, e,
@@ -94,6 +105,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
         const util::Frame frame = util::Frame::fromNormal(sp.shading);
         const glm::vec3 wo = frame.toLocal(-dir);
         L += beta * mat.emission;
+        if (mat.emission != glm::vec3(0.0f)) splat(m_groups.emissionGroup, beta * mat.emission);
         addEvent(from, "emission", techniqueOfDir, scatterPdfOfDir, {}, 1.0, fcosOfDir,
                  mat.emission, betaBeforeDir, beta * mat.emission);
         PathVertex* vertex = nullptr;
@@ -135,6 +147,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
             const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2,
                                           vertex ? &lightEvent : nullptr);
             L += beta * e;
+            if (groups) splat(m_groups.groupOfLight[m_lights.select(uSelect)], beta * e);
             addEvent(depth, "light-nee", lightEvent.technique, lightEvent.pdf,
                      std::move(lightEvent.misPdfs), lightEvent.weight, lightEvent.fcos,
                      lightEvent.radiance, beta, beta * e);
@@ -150,6 +163,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record)
                     envNextEvent(mat, frame, *neeSampler, wo, ng, next, ue1, ue2, ue3,
                                  vertex ? &record->events : nullptr, depth, beta);
                 L += beta * e;
+                splat(m_groups.environmentGroup, beta * e);
             }
         }
 

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace wavelit::scene {
 struct Scene;
@@ -45,6 +46,12 @@ public:
     virtual int samplesPerPixel() const = 0;
     // Mean radiance per pixel over the passes so far (linear Rec.709).
     virtual util::Result<util::ImageRGB> image() = 0;
+    // With RenderOptions::lightGroups: the mean radiance of each light group's layer, in
+    // lightGroupsOf(scene) order (light_groups.h); their sum is image() to float rounding.
+    // Without: an empty list.
+    virtual util::Result<std::vector<util::ImageRGB>> groupImages() {
+        return util::makeError(util::ErrorKind::Unsupported, "", "light groups not supported");
+    }
     virtual void resetAccumulation() = 0;
     virtual std::string deviceName() const = 0;
     virtual IntegratorTimings timings() const = 0;

@@ -38,6 +38,9 @@ struct RenderOptions {
     std::string vulkanDevice;
     // Vulkan validation layers: on when true, or when WAVELIT_VK_VALIDATION=1; tests turn it on.
     bool validation = false;
+    // LightMix (docs/lightmix.md): also accumulate one radiance layer per light group
+    // (light_groups.h). Off: no layers are allocated and the tracers add nothing.
+    bool lightGroups = false;
 };
 
 } // namespace wavelit::render

@@ -8,6 +8,7 @@
 
 #include "render/session/bvh_update.h"
 #include "render/session/integrator_factory.h"
+#include "render/session/light_groups.h"
 #include "render/gpu/render_limits.h"
 #include "scene/bvh.h"
 #include "util/log.h"
@@ -21,7 +22,9 @@ namespace {
 util::Result<std::unique_ptr<Integrator>> makeCpuIntegrator(std::shared_ptr<const scene::Scene> scene,
                                                             std::shared_ptr<const scene::Bvh> bvh,
                                                             const RenderOptions& options) {
-    if (auto fits = checkCpuImageMemory(options.width, options.height, physicalMemoryBytes()); !fits)
+    const size_t groups = options.lightGroups ? lightGroupsOf(*scene).size() : 0;
+    if (auto fits = checkCpuImageMemory(options.width, options.height, physicalMemoryBytes(), groups);
+        !fits)
         return fits.error();
     return createCpuPathTracer(std::move(scene), std::move(bvh), options);
 }
@@ -147,6 +150,17 @@ util::Result<util::ImageRGB> RenderSession::image() {
     if (!m_integrator)
         return util::makeError(util::ErrorKind::Invalid, "", "render session has no integrator");
     return m_integrator->image();
+}
+
+util::Result<std::vector<util::ImageRGB>> RenderSession::groupImages() {
+    if (!m_integrator)
+        return util::makeError(util::ErrorKind::Invalid, "", "render session has no integrator");
+    if (!m_options.lightGroups) return std::vector<util::ImageRGB>{};
+    return m_integrator->groupImages();
+}
+
+LightGroups RenderSession::lightGroups() const {
+    return m_scene ? lightGroupsOf(*m_scene) : LightGroups{};
 }
 
 RenderStats RenderSession::stats() const {

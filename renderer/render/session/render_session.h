@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/session/integrator.h"
+#include "render/session/light_groups.h"
 #include "render/session/render_options.h"
 #include "scene/scene.h"
 #include "util/image.h"
@@ -47,6 +48,11 @@ public:
     void setInterruptCheck(InterruptCheck check);
     int samplesPerPixel() const;
     util::Result<util::ImageRGB> image();
+    // With RenderOptions::lightGroups, the mean of each LightMix layer (lightGroups() order; they
+    // sum to image()); without, an empty list.
+    util::Result<std::vector<util::ImageRGB>> groupImages();
+    // The light groups of the session's scene (names of groupImages()' layers).
+    LightGroups lightGroups() const;
     RenderStats stats() const;
     const RenderOptions& options() const { return m_options; }
 
