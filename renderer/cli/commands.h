@@ -12,5 +12,6 @@ int runMerge(const std::vector<std::string>& args);    // merge_command.cpp
 int runValidate(const std::vector<std::string>& args); // validate_command.cpp
 int runWavelet(const std::vector<std::string>& args);  // wavelet_command.cpp
 int runBench(const std::vector<std::string>& args);    // bench_command.cpp
+int runRelight(const std::vector<std::string>& args);  // relight_command.cpp
 
 } // namespace wavelit::cli

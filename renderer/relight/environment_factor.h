@@ -1,0 +1,28 @@
+// The environment factor L of the relighting product: shared by every preview point (it lives in
+// the global frame), so an environment edit costs one resampling and one Haar transform per
+// channel plus a K-term dot product per point. The equirect map is splatted onto the octahedral
+// grid with the wavelet core's energy-preserving resampler (a sun keeps its energy at 32^2), in
+// the rotated frame (architecture.md §3: rotation is a yaw about +Y), times intensity x tint.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <vector>
+
+namespace wavelit::relight {
+
+struct EnvironmentFactor {
+    int level = 0;
+    std::array<std::vector<double>, 3> coefficients; // Haar, haar.h's dense layout, per channel
+};
+
+EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level);
+
+// The radiance a camera ray that escapes along dir sees (docs/estimator.md "Environment": the
+// nearest texel after the yaw rotation), for background pixels of the preview.
+glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& dir);
+
+} // namespace wavelit::relight

@@ -1,0 +1,150 @@
+#include "relight/point_transfer.h"
+
+#include "relight/light_projection.h"
+#include "util/hemisphere_sampling.h"
+#include "wavelet/haar.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace wavelit::relight {
+namespace {
+
+constexpr float kRayOffset = 1e-4f; // docs/estimator.md's scale-aware epsilon
+
+const ResolvedMaterial& materialOf(const TransferContext& ctx, const PreviewPoint& p) {
+    const auto& m = *ctx.materials;
+    return m[std::min<size_t>(p.material, m.size() - 1)];
+}
+
+bool blockedByOthers(const PointState& s, size_t texel) {
+    for (const Occlusion& o : s.occlusions)
+        if (testBit(o.blocked, texel)) return true;
+    return false;
+}
+
+glm::vec3 transferWithFrame(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                            const util::Frame& frame, const glm::vec3& wo, size_t texel) {
+    if (!testBit(s.lit, texel) || blockedByOthers(s, texel)) return glm::vec3(0.0f);
+    const glm::vec3& wi = ctx.dirs->direction(texel);
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const float cosine = glm::dot(wi, p.shading);
+    return m.brdf->eval(m.params, wo, frame.toLocal(wi)) * cosine;
+}
+
+} // namespace
+
+size_t PointState::bytes() const {
+    size_t b = sizeof(PointState) + lit.capacity() * sizeof(uint64_t) +
+               transfer.index.capacity() * sizeof(uint16_t) +
+               transfer.value.capacity() * sizeof(glm::vec3) + lightTerms.capacity() * sizeof(glm::vec3) +
+               occlusions.capacity() * sizeof(Occlusion);
+    for (const Occlusion& o : occlusions) b += o.blocked.capacity() * sizeof(uint64_t);
+    return b;
+}
+
+glm::vec3 rayOrigin(const PreviewPoint& p) {
+    return p.position + p.geometric * (kRayOffset * std::max(1.0f, glm::length(p.position)));
+}
+
+glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                     size_t texel) {
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    return transferWithFrame(ctx, p, s, frame, frame.toLocal(p.wo), texel);
+}
+
+void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j) {
+    auto it = std::lower_bound(s.occlusions.begin(), s.occlusions.end(), j,
+                               [](const Occlusion& o, uint32_t v) { return o.object < v; });
+    if (it != s.occlusions.end() && it->object == j) it = s.occlusions.erase(it);
+    if (j == p.object) return;
+    const ObjectOccluder& occluder = (*ctx.occluders)[j];
+    const glm::vec3 origin = rayOrigin(p);
+    const TexelBits cone = coneTexels(occluder.bounds, origin, *ctx.dirs, s.lit);
+    if (!anyBit(cone)) return;
+    TexelBits blocked = castOcclusion(occluder, origin, *ctx.dirs, cone);
+    if (anyBit(blocked)) s.occlusions.insert(it, Occlusion{j, std::move(blocked)});
+}
+
+void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+    const int level = ctx.dirs->level();
+    std::array<wavelet::SquareGrid, 3> grids{wavelet::SquareGrid(level), wavelet::SquareGrid(level),
+                                             wavelet::SquareGrid(level)};
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    for (size_t w = 0; w < s.lit.size(); ++w)
+        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
+            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
+            const glm::vec3 v = transferWithFrame(ctx, p, s, frame, wo, t);
+            for (size_t c = 0; c < 3; ++c) grids[c].values[t] = double(v[int(c)]);
+        }
+    std::array<std::vector<double>, 3> coeffs;
+    for (size_t c = 0; c < 3; ++c) coeffs[c] = wavelet::forwardHaar(grids[c]).coeffs;
+    const size_t count = coeffs[0].size();
+    std::vector<std::pair<double, uint32_t>> ranked; // (-score, index): ascending = best first
+    ranked.reserve(count);
+    for (size_t i = 1; i < count; ++i) {
+        const double score = 0.2126 * std::abs(coeffs[0][i]) + 0.7152 * std::abs(coeffs[1][i]) +
+                             0.0722 * std::abs(coeffs[2][i]);
+        if (score > 0.0) ranked.push_back({-score, uint32_t(i)});
+    }
+    const size_t details = ctx.keep > 1 ? ctx.keep - 1 : 0;
+    if (ranked.size() > details) {
+        std::nth_element(ranked.begin(), ranked.begin() + std::ptrdiff_t(details), ranked.end());
+        ranked.resize(details);
+    }
+    std::vector<uint32_t> kept{0}; // the scaling coefficient (the integral) is always kept
+    for (const auto& r : ranked) kept.push_back(r.second);
+    std::sort(kept.begin(), kept.end());
+    s.transfer.index.assign(kept.begin(), kept.end());
+    s.transfer.value.resize(kept.size());
+    for (size_t k = 0; k < kept.size(); ++k)
+        s.transfer.value[k] = glm::vec3(float(coeffs[0][kept[k]]), float(coeffs[1][kept[k]]),
+                                        float(coeffs[2][kept[k]]));
+}
+
+glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env) {
+    glm::dvec3 sum(0.0);
+    for (size_t k = 0; k < s.transfer.index.size(); ++k) {
+        const size_t i = s.transfer.index[k];
+        const glm::vec3& t = s.transfer.value[k];
+        sum += glm::dvec3(double(t.x) * env.coefficients[0][i], double(t.y) * env.coefficients[1][i],
+                          double(t.z) * env.coefficients[2][i]);
+    }
+    return glm::vec3(sum * (4.0 * std::numbers::pi));
+}
+
+glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                    const scene::Light& light) {
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    glm::vec3 sum(0.0f);
+    for (const TexelWeight& e : projectLight(light, rayOrigin(p), *ctx.dirs))
+        sum += transferWithFrame(ctx, p, s, frame, wo, e.texel) * e.weight;
+    return sum;
+}
+
+PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
+    PointState s;
+    const TexelDirections& dirs = *ctx.dirs;
+    TexelBits above = makeBits(dirs.count());
+    for (size_t t = 0; t < dirs.count(); ++t)
+        if (glm::dot(dirs.direction(t), p.geometric) > 0.0f && glm::dot(dirs.direction(t), p.shading) > 0.0f)
+            setBit(above, t);
+    const glm::vec3 origin = rayOrigin(p);
+    const TexelBits self = castOcclusion((*ctx.occluders)[p.object], origin, dirs, above);
+    s.lit = above;
+    for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];
+    for (uint32_t j = 0; j < ctx.occluders->size(); ++j) updateOcclusion(ctx, p, s, j);
+    rebuildTransfer(ctx, p, s);
+    s.envTerm = environmentTerm(s, *ctx.environment);
+    for (const scene::Light& light : ctx.scene->lighting.lights)
+        s.lightTerms.push_back(lightTerm(ctx, p, s, light));
+    return s;
+}
+
+} // namespace wavelit::relight

@@ -1,0 +1,44 @@
+#include "relight/texel_directions.h"
+
+#include "wavelet/sphere_map.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace wavelit::relight {
+
+TexelDirections::TexelDirections(int level) : m_level(level) {
+    const wavelet::OctahedralMap map;
+    const int n = side();
+    m_dirs.resize(size_t(n) * size_t(n));
+    double widest = 0.0;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const glm::dvec3 c = map.toDirection(0, {(x + 0.5) / n, (y + 0.5) / n});
+            m_dirs[size_t(y) * size_t(n) + size_t(x)] = glm::vec3(c);
+            for (int corner = 0; corner < 4; ++corner) {
+                const glm::dvec3 k =
+                    map.toDirection(0, {double(x + (corner & 1)) / n, double(y + (corner >> 1)) / n});
+                widest = std::max(widest, std::acos(std::clamp(glm::dot(c, k), -1.0, 1.0)));
+            }
+        }
+    m_texelSolidAngle = 4.0 * std::numbers::pi / double(m_dirs.size());
+    m_texelRadius = widest * 1.01 + 1e-6;
+}
+
+uint32_t TexelDirections::texelOf(const glm::vec3& d) const {
+    static const wavelet::OctahedralMap map;
+    const wavelet::FacePoint p = map.toSquare(glm::dvec3(d));
+    const int n = side();
+    const int x = std::clamp(int(p.uv.x * n), 0, n - 1), y = std::clamp(int(p.uv.y * n), 0, n - 1);
+    return uint32_t(y * n + x);
+}
+
+bool anyBit(const TexelBits& b) {
+    return std::any_of(b.begin(), b.end(), [](uint64_t w) { return w != 0; });
+}
+
+} // namespace wavelit::relight
