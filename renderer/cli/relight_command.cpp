@@ -144,6 +144,8 @@ int runRelight(const std::vector<std::string>& argv) {
             auto reference = directLightingReference(scene, *width, *height, *refSpp);
             if (!reference) return reportError(reference.error());
             e["relRMSE"] = std::sqrt(render::relativeMse(image, *reference));
+            e["meanPreview"] = render::meanValue(image);
+            e["meanReference"] = render::meanValue(*reference);
             if (const char* keepRef = std::getenv("WAVELIT_RELIGHT_KEEP_REFERENCE"); keepRef && *keepRef == '1')
                 (void)scene::writeExr((out / ("reference_" + std::to_string(i) + ".exr")).string(), *reference);
         } else {

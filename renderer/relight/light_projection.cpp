@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace wavelit::relight {
@@ -11,6 +12,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxSide = 8;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 struct Basis {
     glm::vec3 t, b;
@@ -30,17 +32,25 @@ int sidesFor(double omega, const TexelDirections& dirs) {
 class Accumulator {
 public:
     explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) {}
-    void add(const glm::vec3& dir, const glm::vec3& weight) {
-        m_entries.push_back({m_dirs.texelOf(dir), weight});
+    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
+        m_entries.push_back({m_dirs.texelOf(dir), weight, distance});
     }
     std::vector<TexelWeight> finish() {
         std::stable_sort(m_entries.begin(), m_entries.end(),
                          [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
         std::vector<TexelWeight> out;
+        std::vector<int> counts;
         for (const TexelWeight& e : m_entries) {
-            if (!out.empty() && out.back().texel == e.texel) out.back().weight += e.weight;
-            else out.push_back(e);
+            if (!out.empty() && out.back().texel == e.texel) {
+                out.back().weight += e.weight;
+                out.back().distance += e.distance;
+                ++counts.back();
+            } else {
+                out.push_back(e);
+                counts.push_back(1);
+            }
         }
+        for (size_t i = 0; i < out.size(); ++i) out[i].distance /= float(counts[i]);
         std::erase_if(out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
         return out;
     }
@@ -52,10 +62,10 @@ private:
 
 // Uniform radiance `radiance` over the cone of half angle with 1 - cos = oneMinusCos about axis.
 void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axis,
-             double oneMinusCos, const glm::vec3& radiance) {
+             double oneMinusCos, const glm::vec3& radiance, float distance) {
     const double omega = 2.0 * kPi * oneMinusCos;
     const glm::vec3 total = radiance * float(omega);
-    if (omega < 0.25 * dirs.texelSolidAngle()) return acc.add(axis, total);
+    if (omega < 0.25 * dirs.texelSolidAngle()) return acc.add(axis, total, distance);
     const int s = sidesFor(omega, dirs);
     const Basis basis = basisAround(axis);
     const glm::vec3 each = total / float(s * s);
@@ -68,7 +78,7 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
             const double phi = 2.0 * kPi * u2;
             const glm::vec3 d = float(cosT) * axis + float(sinT * std::cos(phi)) * basis.t +
                                 float(sinT * std::sin(phi)) * basis.b;
-            acc.add(d, each);
+            acc.add(d, each, distance);
         }
 }
 
@@ -94,7 +104,7 @@ void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& 
             const float dist2 = glm::dot(d, d);
             const float cosLight = -glm::dot(d, n) / std::sqrt(dist2);
             if (!(cosLight > 0.0f)) continue;
-            acc.add(d, radiance * (area / float(s * s)) * cosLight / dist2);
+            acc.add(d, radiance * (area / float(s * s)) * cosLight / dist2, std::sqrt(dist2));
         }
 }
 
@@ -123,8 +133,9 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
             if (!(d2 > r2)) break; // inside: the surface emits outward only
             const double sin2 = double(r2) / double(d2);
             const double oneMinusCos = sin2 / (1.0 + std::sqrt(1.0 - sin2));
+            // Shadow rays stop at the sphere's near side along its centre direction.
             addCone(acc, dirs, toLight / std::sqrt(d2), oneMinusCos,
-                    power * float(1.0 / (4.0 * kPi * kPi * double(r2))));
+                    power * float(1.0 / (4.0 * kPi * kPi * double(r2))), std::sqrt(d2) - light.radius);
             break;
         }
         [[fallthrough]];
@@ -133,7 +144,7 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         if (!(d2 > 0.0f)) break;
         const glm::vec3 dir = toLight / std::sqrt(d2);
         const float falloff = light.type == scene::LightType::Spot ? spotFalloff(light, -dir) : 1.0f;
-        acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2);
+        acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
         break;
     }
     case scene::LightType::Rect: addRect(acc, dirs, light, p); break;
@@ -143,11 +154,11 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         const glm::vec3 axis = -light.direction / len;
         const double half = 0.5 * double(light.angularDiameterDeg) * kPi / 180.0;
         if (half <= 0.0) {
-            acc.add(axis, power);
+            acc.add(axis, power, kInfinity);
             break;
         }
         const double s = std::sin(half), sHalf = std::sin(0.5 * half);
-        addCone(acc, dirs, axis, 2.0 * sHalf * sHalf, power * float(1.0 / (kPi * s * s)));
+        addCone(acc, dirs, axis, 2.0 * sHalf * sHalf, power * float(1.0 / (kPi * s * s)), kInfinity);
         break;
     }
     }

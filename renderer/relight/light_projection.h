@@ -25,9 +25,10 @@ namespace wavelit::relight {
 struct TexelWeight {
     uint32_t texel = 0;
     glm::vec3 weight{0.0f}; // integral of radiance over the texel's solid angle
+    float distance = 0.0f;  // mean distance to the light's samples in the texel (inf: the sun)
 };
 
-// Sorted by texel, one entry per texel, no zero weights.
+// Sorted by texel, one entry per texel, no zero weights. p is the visibility rays' origin.
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs);
 

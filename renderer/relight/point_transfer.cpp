@@ -27,19 +27,51 @@ bool blockedByOthers(const PointState& s, size_t texel) {
     return false;
 }
 
+// cosine x f at a texel above the horizon, without visibility.
+glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const util::Frame& frame,
+                     const glm::vec3& wo, size_t texel) {
+    const glm::vec3& wi = ctx.dirs->direction(texel);
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const glm::vec3 local = frame.toLocal(wi);
+    if (m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
+        constexpr int kCount = TexelDirections::kSub * TexelDirections::kSub;
+        const glm::vec3* sub = ctx.dirs->subDirections(texel);
+        glm::vec3 sum(0.0f);
+        for (int k = 0; k < kCount; ++k) {
+            const glm::vec3 l = frame.toLocal(sub[k]);
+            if (l.z > 0.0f) sum += m.brdf->eval(m.params, wo, l) * l.z;
+        }
+        return sum / float(kCount);
+    }
+    return m.brdf->eval(m.params, wo, local) * local.z;
+}
+
 glm::vec3 transferWithFrame(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                             const util::Frame& frame, const glm::vec3& wo, size_t texel) {
     if (!testBit(s.lit, texel) || blockedByOthers(s, texel)) return glm::vec3(0.0f);
-    const glm::vec3& wi = ctx.dirs->direction(texel);
-    const ResolvedMaterial& m = materialOf(ctx, p);
-    const float cosine = glm::dot(wi, p.shading);
-    return m.brdf->eval(m.params, wo, frame.toLocal(wi)) * cosine;
+    return unshadowed(ctx, p, frame, wo, texel);
 }
 
 } // namespace
 
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
+    ResolvedMaterial r;
+    r.brdf = plugins::findBrdf(m.brdf);
+    if (!r.brdf) r.brdf = plugins::findBrdf(plugins::defaultBrdfName());
+    r.params.baseColor = m.baseColor;
+    r.params.roughness = m.roughness;
+    r.emission = m.emission;
+    const plugins::BrdfLobeWidth lobe = r.brdf->lobeWidth(r.params);
+    if (r.brdf->lobeAxis() == plugins::BrdfLobeAxis::Mirror && lobe.halfWidth < 2.0 * texelRadius) {
+        r.narrow = true;
+        const double cap = lobe.capHalfAngle + 2.0 * texelRadius;
+        r.cosCap = cap >= 3.14159265358979 ? -2.0f : float(std::cos(cap));
+    }
+    return r;
+}
+
 size_t PointState::bytes() const {
-    size_t b = sizeof(PointState) + lit.capacity() * sizeof(uint64_t) +
+    size_t b = sizeof(PointState) + (above.capacity() + lit.capacity()) * sizeof(uint64_t) +
                transfer.index.capacity() * sizeof(uint16_t) +
                transfer.value.capacity() * sizeof(glm::vec3) + lightTerms.capacity() * sizeof(glm::vec3) +
                occlusions.capacity() * sizeof(Occlusion);
@@ -122,9 +154,16 @@ glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const Poi
                     const scene::Light& light) {
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
+    const glm::vec3 origin = rayOrigin(p);
     glm::vec3 sum(0.0f);
-    for (const TexelWeight& e : projectLight(light, rayOrigin(p), *ctx.dirs))
-        sum += transferWithFrame(ctx, p, s, frame, wo, e.texel) * e.weight;
+    for (const TexelWeight& e : projectLight(light, origin, *ctx.dirs)) {
+        if (!testBit(s.above, e.texel)) continue;
+        bool seen = testBit(s.lit, e.texel) && !blockedByOthers(s, e.texel);
+        if (!seen && std::isfinite(e.distance))
+            seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
+                                    e.distance * (1.0f - 1e-3f));
+        if (seen) sum += unshadowed(ctx, p, frame, wo, e.texel) * e.weight;
+    }
     return sum;
 }
 
@@ -137,6 +176,7 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
             setBit(above, t);
     const glm::vec3 origin = rayOrigin(p);
     const TexelBits self = castOcclusion((*ctx.occluders)[p.object], origin, dirs, above);
+    s.above = above;
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];
     for (uint32_t j = 0; j < ctx.occluders->size(); ++j) updateOcclusion(ctx, p, s, j);

@@ -11,7 +11,12 @@
 // as its K largest Haar coefficients (RGB, ranked by luminance-weighted magnitude) for the
 // environment term 4 pi <T, L>, and evaluated from the factors at a light's few texels for the
 // light terms <T, L_k> (exact at the grid's resolution; a point light needs T at one texel, where
-// K-term truncation error would be largest). Lighting is linear, so the radiance is the sum of
+// K-term truncation error would be largest). The O factors are visibility at infinite distance
+// (right for the environment); a local light is seen when nothing lies between it and the point,
+// so a light texel that they mark blocked gets one shadow ray up to the light's distance (an
+// unblocked one needs none: blocked within a distance implies blocked at infinity). In an open
+// scene that is almost no rays; inside a box (the Cornell box's ceiling light) one per light
+// texel. Lighting is linear, so the radiance is the sum of
 // the environment term and one term per light, each rebuilt alone when its light changes.
 #pragma once
 
@@ -40,7 +45,8 @@ struct SparseTransfer {
 };
 
 struct PointState {
-    TexelBits lit;
+    TexelBits above; // texels above both the geometric and the shading horizon
+    TexelBits lit;   // above, and not blocked by the point's own object
     std::vector<Occlusion> occlusions; // ascending object index
     SparseTransfer transfer;
     glm::vec3 envTerm{0.0f};
@@ -52,13 +58,22 @@ struct ResolvedMaterial {
     const plugins::Brdf* brdf = nullptr;
     plugins::BrdfParams params;
     glm::vec3 emission{0.0f};
+    // A glossy lobe narrower than a texel: f x cosine is averaged over each texel within
+    // cosCap of the mirror direction (TexelDirections::kSub^2 directions) instead of taken at
+    // the centre, which would alias a highlight in or out of the texel.
+    bool narrow = false;
+    float cosCap = 1.0f;
 };
+
+// The material as the preview uses it; texelRadius from the sphere grid.
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius);
 
 // What every point's computation reads; immutable while points are computed in parallel.
 struct TransferContext {
     const scene::Scene* scene = nullptr;
     const TexelDirections* dirs = nullptr;
     const std::vector<ObjectOccluder>* occluders = nullptr; // per Scene::objects entry
+    const scene::Bvh* sceneBvh = nullptr; // every object: shadow rays toward local lights
     const std::vector<ResolvedMaterial>* materials = nullptr; // per material, + the default last
     const EnvironmentFactor* environment = nullptr;
     size_t keep = 128; // K: Haar coefficients of T kept per point (>= 4^n keeps all)
@@ -69,7 +84,7 @@ glm::vec3 rayOrigin(const PreviewPoint& p);
 
 // Everything: self-visibility, every object's occlusion, T, the environment and light terms.
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p);
-// Re-casts object j's occlusion over `region` (lit texels its old or new bounds may cover) and
+// Re-casts object j's occlusion over the lit texels its bounding cone may cover and
 // stores it when anything is blocked (never for the point's own object: that is Õ1).
 void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j);
 // Rebuilds T's coefficients from the factors (after f or an O_j changed).

@@ -32,8 +32,10 @@ std::vector<PreviewPoint> castPreviewPoints(const scene::Scene& scene, const sce
         const glm::vec3 dir = cameraRay(scene.camera, width, height, x, y);
         PreviewPoint& p = points[i];
         p.wo = -dir;
+        p.distance = std::numeric_limits<float>::infinity();
         scene::BvhHit hit;
         if (!scene::intersect(bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit)) return;
+        p.distance = hit.t;
         const scene::BvhTriangle& tri = bvh.triangles[hit.triangle];
         p.hit = true;
         p.position = origin + hit.t * dir;

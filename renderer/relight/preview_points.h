@@ -23,6 +23,7 @@ struct PreviewPoint {
     glm::vec3 wo{0.0f};        // toward the camera (unit); for a miss, the ray direction's opposite
     uint32_t object = 0;       // index into Scene::objects
     uint32_t material = 0;     // index into Scene::materials (== size: the default Material{})
+    float distance = 0.0f;     // along the camera ray to the hit (infinity for a miss)
 
     bool operator==(const PreviewPoint&) const = default;
 };

@@ -125,14 +125,17 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
             return;
         }
         bool transfer = std::find(materials.begin(), materials.end(), p.material) != materials.end();
+        bool lightsToo = false; // a moved object may shadow a local light within its distance
         const glm::vec3 origin = rayOrigin(p);
         for (size_t n = 0; n < objects.size(); ++n) {
             const size_t j = objects[n];
-            // The shadow region: lit texels the old or the new bounding cone may cover.
-            if (!anyOverlap(coneTexels(oldBounds[n], origin, m_dirs, s.lit),
-                            coneTexels(m_occluders[j].bounds, origin, m_dirs, s.lit)))
+            // The shadow region: texels above the horizon that the old or the new bounding cone
+            // may cover (light shadow rays run in all of them; O_j in the lit ones).
+            if (!anyOverlap(coneTexels(oldBounds[n], origin, m_dirs, s.above),
+                            coneTexels(m_occluders[j].bounds, origin, m_dirs, s.above)))
                 continue;
             touched[i] = 1;
+            lightsToo = true;
             const std::vector<Occlusion> before = s.occlusions;
             updateOcclusion(ctx, p, s, uint32_t(j));
             const bool same = before.size() == s.occlusions.size() &&
@@ -153,6 +156,11 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         if (environment) {
             s.envTerm = environmentTerm(s, m_environment);
             touched[i] = 1;
+        }
+        if (lightsToo) {
+            for (size_t k = 0; k < s.lightTerms.size(); ++k)
+                s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            return;
         }
         for (size_t k : lights) {
             s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);

@@ -1,5 +1,6 @@
 #include "relight/relight_preview.h"
 
+#include "relight/camera_lights.h"
 #include "relight/parallel_for.h"
 
 namespace wavelit::relight {
@@ -23,15 +24,7 @@ util::Result<std::unique_ptr<RelightPreview>> RelightPreview::create(const scene
 
 void RelightPreview::resolveMaterials() {
     m_materials.clear();
-    auto resolve = [](const scene::Material& m) {
-        ResolvedMaterial r;
-        r.brdf = plugins::findBrdf(m.brdf);
-        if (!r.brdf) r.brdf = plugins::findBrdf(plugins::defaultBrdfName());
-        r.params.baseColor = m.baseColor;
-        r.params.roughness = m.roughness;
-        r.emission = m.emission;
-        return r;
-    };
+    auto resolve = [&](const scene::Material& m) { return resolveMaterial(m, m_dirs.texelRadius()); };
     for (const scene::Material& m : m_scene->materials) m_materials.push_back(resolve(m));
     m_materials.push_back(resolve(scene::Material{})); // index == size: the default material
 }
@@ -41,6 +34,7 @@ TransferContext RelightPreview::context() const {
     ctx.scene = m_scene.get();
     ctx.dirs = &m_dirs;
     ctx.occluders = &m_occluders;
+    ctx.sceneBvh = &m_bvh;
     ctx.materials = &m_materials;
     ctx.environment = &m_environment;
     ctx.keep = m_settings.keep;
@@ -66,9 +60,11 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
 }
 
 glm::vec3 RelightPreview::radiance(size_t i) const {
-    if (!m_points[i].hit) return m_background[i];
+    const glm::vec3 lights =
+        lightsSeenByCamera(*m_scene, m_scene->camera.position, -m_points[i].wo, m_points[i].distance);
+    if (!m_points[i].hit) return m_background[i] + lights;
     const PointState& s = m_states[i];
-    glm::vec3 sum = m_materials[std::min<size_t>(m_points[i].material, m_materials.size() - 1)].emission;
+    glm::vec3 sum = lights + m_materials[std::min<size_t>(m_points[i].material, m_materials.size() - 1)].emission;
     sum += s.envTerm;
     for (const glm::vec3& l : s.lightTerms) sum += l;
     return sum;

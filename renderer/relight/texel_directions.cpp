@@ -14,11 +14,17 @@ TexelDirections::TexelDirections(int level) : m_level(level) {
     const wavelet::OctahedralMap map;
     const int n = side();
     m_dirs.resize(size_t(n) * size_t(n));
+    m_sub.resize(m_dirs.size() * kSub * kSub);
     double widest = 0.0;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const glm::dvec3 c = map.toDirection(0, {(x + 0.5) / n, (y + 0.5) / n});
             m_dirs[size_t(y) * size_t(n) + size_t(x)] = glm::vec3(c);
+            glm::vec3* sub = &m_sub[(size_t(y) * size_t(n) + size_t(x)) * kSub * kSub];
+            for (int j = 0; j < kSub; ++j)
+                for (int i = 0; i < kSub; ++i)
+                    sub[j * kSub + i] = glm::vec3(map.toDirection(
+                        0, {(x + (i + 0.5) / kSub) / n, (y + (j + 0.5) / kSub) / n}));
             for (int corner = 0; corner < 4; ++corner) {
                 const glm::dvec3 k =
                     map.toDirection(0, {double(x + (corner & 1)) / n, double(y + (corner >> 1)) / n});

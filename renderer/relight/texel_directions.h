@@ -25,12 +25,16 @@ public:
     // Half the largest angle between a texel's centre and its corners (radians), padded: a cone
     // test against centre directions widened by it never misses a texel the cone touches.
     double texelRadius() const { return m_texelRadius; }
+    // kSub x kSub stratified directions inside texel t (for averaging a narrow BRDF lobe over it).
+    static constexpr int kSub = 4;
+    const glm::vec3* subDirections(size_t texel) const { return &m_sub[texel * kSub * kSub]; }
     // The texel holding direction d (any non-zero vector).
     uint32_t texelOf(const glm::vec3& d) const;
 
 private:
     int m_level;
     std::vector<glm::vec3> m_dirs;
+    std::vector<glm::vec3> m_sub;
     double m_texelSolidAngle;
     double m_texelRadius;
 };
