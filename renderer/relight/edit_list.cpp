@@ -93,9 +93,15 @@ util::Result<std::vector<PlannedEdit>> readEditList(const std::string& path, con
             return bad(edit.property + ": file edits are not previewed (the file is loaded with the scene)");
         scene::Json value = e["value"];
         if (info->type == scene::PropertyType::IdRef && value.is_string()) {
-            auto target = resolveEntityName(current, value.get<std::string>());
-            if (!target || target.value().kind != info->refersTo) return bad(edit.property + ": no such entity '" + value.get<std::string>() + "'");
-            value = target.value().id;
+            // A plain name names an entity of the kind the property refers to ("ground" is the
+            // material even when an object is called so too); "kind:name" as anywhere else.
+            const std::string name = value.get<std::string>();
+            std::optional<scene::EntityRef> target = ofKind(current, info->refersTo, name);
+            if (!target)
+                if (auto r = resolveEntityName(current, name); r && r.value().kind == info->refersTo) target = r.value();
+            if (!target)
+                return bad(edit.property + ": no " + scene::entityKindName(info->refersTo) + " named '" + name + "'");
+            value = target->id;
         }
         auto converted = scene::valueFromJson(value, *info, at.child("value"));
         if (!converted) return converted.error();
