@@ -7,7 +7,8 @@
 // with --reference-spp N also relRMSE = sqrt(relative MSE, render/session/image_metrics.h) against
 // the CPU tracer's direct lighting (bounces 1, N spp, MIS sampler) of the edited scene.
 // --preview: preview points per row (default 128; the height follows the aspect); --level: the
-// sphere grid 2^N squared (default 5); --keep: Haar coefficients of T per point (default 128).
+// sphere grid 2^N squared (default 5); --keep: Haar coefficients of T per point (default 128);
+// --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -63,7 +64,8 @@ double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
 
 int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
-                                   "--height", "--preview", "--level", "--keep", "--threads"});
+                                   "--height", "--preview", "--level", "--keep", "--threads"},
+                            {"--skip-full-rebuild"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
         return reportError(makeError(ErrorKind::Usage, "", "relight needs exactly one SCENE"));
@@ -127,8 +129,10 @@ int runRelight(const std::vector<std::string>& argv) {
         const util::ImageRGB image = (*preview)->image(*width, *height);
         const std::string file = (out / ("edit_" + std::to_string(i) + ".exr")).string();
         if (auto st = scene::writeExr(file, image); !st) return reportError(st.error());
+        const bool skipFull = args->has("--skip-full-rebuild");
         util::Timer full;
-        auto scratch = relight::RelightPreview::create(scene, settings);
+        auto scratch = skipFull ? util::Result<std::unique_ptr<relight::RelightPreview>>(nullptr)
+                                : relight::RelightPreview::create(scene, settings);
         if (!scratch) return reportError(scratch.error());
         const double fullMs = full.milliseconds();
         nlohmann::ordered_json e;
@@ -138,8 +142,11 @@ int runRelight(const std::vector<std::string>& argv) {
         e["factorsRebuilt"] = summary.factorsRebuilt;
         e["pointsTouched"] = summary.pointsTouched;
         e["incrementalMs"] = incrementalMs;
-        e["fullRebuildMs"] = fullMs;
-        e["maxRelDiffVsFullRebuild"] = maxRelativeDifference((*preview)->image(), (*scratch)->image());
+        e["fullRebuildMs"] = skipFull ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(fullMs);
+        e["sharedFactorsMs"] = summary.sharedMs;
+        e["perPointMs"] = summary.pointsMs;
+        e["maxRelDiffVsFullRebuild"] = skipFull ? nlohmann::ordered_json(nullptr)
+                                                : nlohmann::ordered_json(maxRelativeDifference((*preview)->image(), (*scratch)->image()));
         if (*refSpp > 0) {
             auto reference = directLightingReference(scene, *width, *height, *refSpp);
             if (!reference) return reportError(reference.error());
@@ -152,9 +159,9 @@ int runRelight(const std::vector<std::string>& argv) {
             e["relRMSE"] = nullptr;
         }
         report["edits"].push_back(std::move(e));
-        std::printf("edit %zu (%s %s): %s, %zu points, %.1f ms (full rebuild %.1f ms) -> %s\n", i,
-                    edit.entity.c_str(), edit.property.c_str(), summary.kind.c_str(),
-                    summary.pointsTouched, incrementalMs, fullMs, file.c_str());
+        std::printf("edit %zu (%s %s): %s, %zu points, %.1f ms (full rebuild %s ms) -> %s\n", i,
+                    edit.entity.c_str(), edit.property.c_str(), summary.kind.c_str(), summary.pointsTouched,
+                    incrementalMs, skipFull ? "-" : std::to_string(fullMs).c_str(), file.c_str());
     }
     if (auto st = scene::writeFileAtomic(*args->value("--report"), report.dump(2) + "\n"); !st)
         return reportError(st.error());

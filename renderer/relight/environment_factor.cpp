@@ -55,6 +55,10 @@ EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int leve
         for (int c = 0; c < 3; ++c) std::fill(grids[size_t(c)].values.begin(), grids[size_t(c)].values.end(), scale[c]);
     }
     for (int c = 0; c < 3; ++c) f.coefficients[size_t(c)] = wavelet::forwardHaar(grids[size_t(c)]).coeffs;
+    f.interleaved.resize(f.coefficients[0].size());
+    for (size_t i = 0; i < f.interleaved.size(); ++i)
+        f.interleaved[i] = glm::vec3(float(f.coefficients[0][i]), float(f.coefficients[1][i]),
+                                     float(f.coefficients[2][i]));
     return f;
 }
 

@@ -17,6 +17,9 @@ namespace wavelit::relight {
 struct EnvironmentFactor {
     int level = 0;
     std::array<std::vector<double>, 3> coefficients; // Haar, haar.h's dense layout, per channel
+    // The same as RGB floats, one load per kept coefficient of T in the per-point dot product
+    // (the sum itself runs in double).
+    std::vector<glm::vec3> interleaved;
 };
 
 EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level);

@@ -11,7 +11,7 @@ namespace wavelit::relight {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kMaxSide = 8;
+constexpr int kMaxSide = 6;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 struct Basis {
@@ -23,10 +23,11 @@ Basis basisAround(const glm::vec3& n) {
     return {t, glm::cross(n, t)};
 }
 
-// Samples per side for a source of solid angle omega: about 4 samples per texel it covers.
+// Samples per side for a source of solid angle omega: about 2 samples per texel it covers (the
+// weights only decide how the light's total splits between neighbouring texels).
 int sidesFor(double omega, const TexelDirections& dirs) {
     const double texels = omega / dirs.texelSolidAngle();
-    return std::clamp(int(std::ceil(std::sqrt(4.0 * texels))), 1, kMaxSide);
+    return std::clamp(int(std::ceil(std::sqrt(2.0 * texels))), 1, kMaxSide);
 }
 
 class Accumulator {

@@ -141,12 +141,9 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
 
 glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env) {
     glm::dvec3 sum(0.0);
-    for (size_t k = 0; k < s.transfer.index.size(); ++k) {
-        const size_t i = s.transfer.index[k];
-        const glm::vec3& t = s.transfer.value[k];
-        sum += glm::dvec3(double(t.x) * env.coefficients[0][i], double(t.y) * env.coefficients[1][i],
-                          double(t.z) * env.coefficients[2][i]);
-    }
+    const glm::vec3* l = env.interleaved.data();
+    for (size_t k = 0; k < s.transfer.index.size(); ++k)
+        sum += glm::dvec3(s.transfer.value[k] * l[s.transfer.index[k]]);
     return glm::vec3(sum * (4.0 * std::numbers::pi));
 }
 

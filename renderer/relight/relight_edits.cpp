@@ -3,6 +3,7 @@
 #include "relight/relight_preview.h"
 
 #include "relight/parallel_for.h"
+#include "util/timer.h"
 
 #include <algorithm>
 
@@ -66,6 +67,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
                    : environment                        ? "environment"
                                                         : "display";
 
+    util::Timer timer;
     std::vector<BoundingSphere> oldBounds;
     for (size_t j : objects) oldBounds.push_back(m_occluders[j].bounds);
     m_scene = std::make_unique<scene::Scene>(edited);
@@ -88,6 +90,8 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         summary.factorsRebuilt.push_back("gbuffer");
     }
 
+    summary.sharedMs = timer.milliseconds();
+    timer.restart();
     const TransferContext ctx = context();
     std::vector<uint8_t> touched(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
@@ -168,6 +172,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         }
     });
     summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
+    summary.pointsMs = timer.milliseconds();
     return summary;
 }
 

@@ -46,6 +46,8 @@ struct EditSummary {
     std::string kind; // environment, light, material, object, camera, display, structure
     std::vector<std::string> factorsRebuilt;
     size_t pointsTouched = 0; // preview points with any per-point work
+    double sharedMs = 0.0;    // shared factors: environment, object BVHs, G-buffer (reports only)
+    double pointsMs = 0.0;    // the per-point work
 };
 
 class RelightPreview {
