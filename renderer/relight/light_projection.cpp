@@ -23,22 +23,23 @@ Basis basisAround(const glm::vec3& n) {
     return {t, glm::cross(n, t)};
 }
 
-// Samples per side for a source of solid angle omega: about 2 samples per texel it covers (the
-// weights only decide how the light's total splits between neighbouring texels).
+// Samples per side for a source of solid angle omega: about one sample per texel it covers (the
+// weights only decide how the light's total splits between neighbouring texels; mapping the
+// samples to texels is most of a light edit's time).
 int sidesFor(double omega, const TexelDirections& dirs) {
     const double texels = omega / dirs.texelSolidAngle();
-    return std::clamp(int(std::ceil(std::sqrt(2.0 * texels))), 1, kMaxSide);
+    return std::clamp(int(std::ceil(std::sqrt(texels))), 1, kMaxSide);
 }
 
 class Accumulator {
 public:
-    explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) {}
+    explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) { m_entries.reserve(kMaxSide * kMaxSide); }
     void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
         m_entries.push_back({m_dirs.texelOf(dir), weight, distance});
     }
     std::vector<TexelWeight> finish() {
-        std::stable_sort(m_entries.begin(), m_entries.end(),
-                         [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
+        std::sort(m_entries.begin(), m_entries.end(),
+                  [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
         std::vector<TexelWeight> out;
         std::vector<int> counts;
         for (const TexelWeight& e : m_entries) {

@@ -103,40 +103,62 @@ void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointSta
 }
 
 void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+    // Scratch buffers per worker thread: a material edit rebuilds T on thousands of points, and
+    // allocating three grids and three pyramids for each cost as much as the transform.
+    thread_local std::vector<glm::dvec3> texels, parent, coeffs;
+    thread_local std::vector<std::pair<double, uint32_t>> ranked;
     const int level = ctx.dirs->level();
-    std::array<wavelet::SquareGrid, 3> grids{wavelet::SquareGrid(level), wavelet::SquareGrid(level),
-                                             wavelet::SquareGrid(level)};
+    const size_t count = ctx.dirs->count();
+    texels.assign(count, glm::dvec3(0.0));
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
+    // Finest scaling coefficients: 2^-n times the texel value (haar.h).
+    const double finest = std::ldexp(1.0, -level);
     for (size_t w = 0; w < s.lit.size(); ++w)
         for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
             const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            const glm::vec3 v = transferWithFrame(ctx, p, s, frame, wo, t);
-            for (size_t c = 0; c < 3; ++c) grids[c].values[t] = double(v[int(c)]);
+            texels[t] = glm::dvec3(transferWithFrame(ctx, p, s, frame, wo, t)) * finest;
         }
-    std::array<std::vector<double>, 3> coeffs;
-    for (size_t c = 0; c < 3; ++c) coeffs[c] = wavelet::forwardHaar(grids[c]).coeffs;
-    const size_t count = coeffs[0].size();
-    std::vector<std::pair<double, uint32_t>> ranked; // (-score, index): ascending = best first
-    ranked.reserve(count);
+    // wavelet::forwardHaar's nonstandard decomposition, the three channels in one pass.
+    coeffs.assign(count, glm::dvec3(0.0));
+    for (int l = level - 1; l >= 0; --l) {
+        const int side = 1 << l, childSide = side * 2;
+        parent.assign(size_t(side) * size_t(side), glm::dvec3(0.0));
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                const size_t r0 = size_t(2 * y) * size_t(childSide), r1 = r0 + size_t(childSide);
+                const size_t base = wavelet::detailIndex(l, x, y, 0);
+                for (int c = 0; c < 3; ++c) {
+                    const double child[4] = {texels[r0 + size_t(2 * x)][c], texels[r0 + size_t(2 * x) + 1][c],
+                                             texels[r1 + size_t(2 * x)][c], texels[r1 + size_t(2 * x) + 1][c]};
+                    double d[3];
+                    wavelet::haarAnalyze(child, parent[size_t(y) * size_t(side) + size_t(x)][c], d);
+                    coeffs[base][c] = d[0];
+                    coeffs[base + 1][c] = d[1];
+                    coeffs[base + 2][c] = d[2];
+                }
+            }
+        texels.swap(parent);
+    }
+    coeffs[0] = texels[0];
+    ranked.clear();
     for (size_t i = 1; i < count; ++i) {
-        const double score = 0.2126 * std::abs(coeffs[0][i]) + 0.7152 * std::abs(coeffs[1][i]) +
-                             0.0722 * std::abs(coeffs[2][i]);
-        if (score > 0.0) ranked.push_back({-score, uint32_t(i)});
+        const glm::dvec3& v = coeffs[i];
+        const double score = 0.2126 * std::abs(v.x) + 0.7152 * std::abs(v.y) + 0.0722 * std::abs(v.z);
+        if (score > 0.0) ranked.push_back({-score, uint32_t(i)}); // ascending = largest first
     }
     const size_t details = ctx.keep > 1 ? ctx.keep - 1 : 0;
     if (ranked.size() > details) {
         std::nth_element(ranked.begin(), ranked.begin() + std::ptrdiff_t(details), ranked.end());
         ranked.resize(details);
     }
-    std::vector<uint32_t> kept{0}; // the scaling coefficient (the integral) is always kept
-    for (const auto& r : ranked) kept.push_back(r.second);
-    std::sort(kept.begin(), kept.end());
-    s.transfer.index.assign(kept.begin(), kept.end());
-    s.transfer.value.resize(kept.size());
-    for (size_t k = 0; k < kept.size(); ++k)
-        s.transfer.value[k] = glm::vec3(float(coeffs[0][kept[k]]), float(coeffs[1][kept[k]]),
-                                        float(coeffs[2][kept[k]]));
+    s.transfer.index.clear();
+    s.transfer.index.push_back(0); // the scaling coefficient (the integral) is always kept
+    for (const auto& r : ranked) s.transfer.index.push_back(uint16_t(r.second));
+    std::sort(s.transfer.index.begin(), s.transfer.index.end());
+    s.transfer.value.resize(s.transfer.index.size());
+    for (size_t k = 0; k < s.transfer.index.size(); ++k)
+        s.transfer.value[k] = glm::vec3(coeffs[s.transfer.index[k]]);
 }
 
 glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env) {

@@ -94,6 +94,14 @@ TEST(RelightQuadrature, LightTermEqualsHaarInnerProductAtFullCoefficients) {
     EXPECT_GT(checked, 10u);
 }
 
+// The float texelOf is the wavelet core's octahedral map: every texel centre maps to its texel.
+TEST(RelightTexels, TexelOfFindsEveryTexelCentre) {
+    for (int level : {3, 5, 6}) {
+        const TexelDirections dirs(level);
+        for (size_t t = 0; t < dirs.count(); ++t) ASSERT_EQ(dirs.texelOf(dirs.direction(t)), t) << level;
+    }
+}
+
 // Moving the far cube (below the ground's horizon, 40 m away) touches exactly the points whose
 // upper hemisphere its old or new bounding cone reaches — none on the ground or the near cube's
 // visible faces — and leaves every other point's state as it was.
