@@ -73,7 +73,9 @@ util::Result<std::vector<PlannedEdit>> readEditList(const std::string& path, con
     scene::Scene current = scene;
     std::vector<PlannedEdit> out;
     for (size_t i = 0; i < root.size(); ++i) {
-        const scene::JsonPlace at{path, "/" + std::to_string(i)};
+        std::string where = "/"; // not "/" + to_string(i): GCC 12 warns falsely (-Wrestrict)
+        where += std::to_string(i);
+        const scene::JsonPlace at{path, where};
         const scene::Json& e = root[i];
         auto bad = [&](const std::string& why) { return scene::jsonError(ErrorKind::Invalid, at, why); };
         if (!e.is_object()) return bad("expected an object {entity, property, value}");
