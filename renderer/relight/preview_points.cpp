@@ -23,36 +23,41 @@ glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, i
     return glm::normalize(forward + sx * right + sy * up);
 }
 
+PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,
+                              int x, int y) {
+    const glm::vec3 origin = scene.camera.position;
+    const glm::vec3 dir = cameraRay(scene.camera, width, height, x, y);
+    PreviewPoint p;
+    p.wo = -dir;
+    p.distance = std::numeric_limits<float>::infinity();
+    scene::BvhHit hit;
+    if (!scene::intersect(bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit)) return p;
+    p.distance = hit.t;
+    const scene::BvhTriangle& tri = bvh.triangles[hit.triangle];
+    p.hit = true;
+    p.position = origin + hit.t * dir;
+    p.material = uint32_t(tri.v0[3]);
+    p.object = uint32_t(tri.v1[3]);
+    // docs/estimator.md "Surfaces", as the reference tracer's surfaceAt.
+    const glm::vec3 p0 = vec3Of(tri.v0), p1 = vec3Of(tri.v1), p2 = vec3Of(tri.v2);
+    glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    if (glm::dot(ng, dir) > 0.0f) ng = -ng;
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    glm::vec3 ns = b0 * vec3Of(tri.n0) + hit.b1 * vec3Of(tri.n1) + hit.b2 * vec3Of(tri.n2);
+    const float length = glm::length(ns);
+    ns = length > 0.0f ? ns / length : ng;
+    if (glm::dot(ns, ng) < 0.0f) ns = -ns;
+    if (glm::dot(-dir, ns) <= 0.0f) ns = ng;
+    p.geometric = ng;
+    p.shading = ns;
+    return p;
+}
+
 std::vector<PreviewPoint> castPreviewPoints(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height, int threads) {
     std::vector<PreviewPoint> points(size_t(width) * size_t(height));
-    const glm::vec3 origin = scene.camera.position;
     parallelFor(points.size(), threads, [&](size_t i) {
-        const int x = int(i % size_t(width)), y = int(i / size_t(width));
-        const glm::vec3 dir = cameraRay(scene.camera, width, height, x, y);
-        PreviewPoint& p = points[i];
-        p.wo = -dir;
-        p.distance = std::numeric_limits<float>::infinity();
-        scene::BvhHit hit;
-        if (!scene::intersect(bvh, origin, dir, 0.0f, std::numeric_limits<float>::max(), hit)) return;
-        p.distance = hit.t;
-        const scene::BvhTriangle& tri = bvh.triangles[hit.triangle];
-        p.hit = true;
-        p.position = origin + hit.t * dir;
-        p.material = uint32_t(tri.v0[3]);
-        p.object = uint32_t(tri.v1[3]);
-        // docs/estimator.md "Surfaces", as the reference tracer's surfaceAt.
-        const glm::vec3 p0 = vec3Of(tri.v0), p1 = vec3Of(tri.v1), p2 = vec3Of(tri.v2);
-        glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-        if (glm::dot(ng, dir) > 0.0f) ng = -ng;
-        const float b0 = 1.0f - hit.b1 - hit.b2;
-        glm::vec3 ns = b0 * vec3Of(tri.n0) + hit.b1 * vec3Of(tri.n1) + hit.b2 * vec3Of(tri.n2);
-        const float length = glm::length(ns);
-        ns = length > 0.0f ? ns / length : ng;
-        if (glm::dot(ns, ng) < 0.0f) ns = -ns;
-        if (glm::dot(-dir, ns) <= 0.0f) ns = ng;
-        p.geometric = ng;
-        p.shading = ns;
+        points[i] = castPreviewPoint(scene, bvh, width, height, int(i % size_t(width)), int(i / size_t(width)));
     });
     return points;
 }

@@ -31,7 +31,10 @@ struct PreviewPoint {
 // Unit direction of the ray through the centre of pixel (x, y) of a width x height image.
 glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y);
 
-// Row-major, width * height points; `bvh` is buildBvh(scene).
+// The point of pixel (x, y); `bvh` is buildBvh(scene).
+PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,
+                              int x, int y);
+// Row-major, width * height points.
 std::vector<PreviewPoint> castPreviewPoints(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height, int threads);
 

@@ -5,6 +5,8 @@
 #include "relight/parallel_for.h"
 #include "util/timer.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 
 namespace wavelit::relight {
@@ -86,8 +88,34 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     std::vector<PreviewPoint> cast;
     if (recast) {
         m_bvh = scene::buildBvh(*m_scene);
-        cast = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
         summary.factorsRebuilt.push_back("gbuffer");
+        if (camera) {
+            cast = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
+        } else {
+            // Only rays that meet a changed object's old or new bounding sphere can find another
+            // hit; the others keep their point (the other objects did not move).
+            std::vector<BoundingSphere> spheres = oldBounds;
+            for (size_t j : objects) spheres.push_back(m_occluders[j].bounds);
+            for (const scene::Invalidation& inv : changes.invalidations())
+                if (inv.factor == scene::FactorKind::ObjectMaterial)
+                    if (size_t j = indexOf(edited.objects, inv.id); j < m_occluders.size())
+                        spheres.push_back(m_occluders[j].bounds);
+            cast = m_points;
+            const glm::vec3 eye = m_scene->camera.position;
+            parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
+                const glm::vec3 dir = -cast[i].wo;
+                for (const BoundingSphere& b : spheres) {
+                    const glm::vec3 oc = eye - b.centre;
+                    const float half = glm::dot(oc, dir), c = glm::dot(oc, oc) - b.radius * b.radius;
+                    if (b.radius >= 0.0f && (c <= 0.0f || (half <= 0.0f && half * half >= c))) {
+                        cast[i] = castPreviewPoint(*m_scene, m_bvh, m_settings.width, m_settings.height,
+                                                   int(i % size_t(m_settings.width)),
+                                                   int(i / size_t(m_settings.width)));
+                        return;
+                    }
+                }
+            });
+        }
     }
 
     summary.sharedMs = timer.milliseconds();
