@@ -42,7 +42,7 @@ EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int leve
     EnvironmentFactor f;
     f.level = level;
     const int side = 1 << level;
-    const glm::dvec3 scale = glm::dvec3(env.intensity) * glm::dvec3(env.tint);
+    const glm::dvec3 scale(1.0); // per unit intensity x tint (environment_factor.h)
     std::array<wavelet::SquareGrid, 3> grids;
     for (auto& g : grids) g = wavelet::SquareGrid(level);
     if (env.image && !env.image->empty()) {
@@ -62,9 +62,10 @@ EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int leve
     return f;
 }
 
+glm::vec3 environmentScale(const scene::Environment& env) { return env.intensity * env.tint; }
+
 glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& dir) {
-    const glm::vec3 scale = env.intensity * env.tint;
-    if (!env.image || env.image->empty()) return scale;
+    if (!env.image || env.image->empty()) return glm::vec3(1.0f);
     constexpr float kPi = 3.14159265358979323846f;
     const float yaw = env.rotationDeg * (kPi / 180.0f);
     const float c = std::cos(yaw), s = std::sin(yaw);
@@ -75,7 +76,7 @@ glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& di
     const float fx = u * float(w), fy = v * float(h);
     const int px = fx > 0.0f ? std::min(int(fx), w - 1) : 0;
     const int py = fy > 0.0f ? std::min(int(fy), h - 1) : 0;
-    return env.image->at(px, py) * scale;
+    return env.image->at(px, py);
 }
 
 } // namespace wavelit::relight

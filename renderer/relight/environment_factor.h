@@ -2,7 +2,10 @@
 // the global frame), so an environment edit costs one resampling and one Haar transform per
 // channel plus a K-term dot product per point. The equirect map is splatted onto the octahedral
 // grid with the wavelet core's energy-preserving resampler (a sun keeps its energy at 32^2), in
-// the rotated frame (architecture.md §3: rotation is a yaw about +Y), times intensity x tint.
+// the rotated frame (architecture.md §3: rotation is a yaw about +Y). Intensity x tint is NOT in
+// the factor: radiance is linear in it, so the preview multiplies each point's environment term
+// by environmentScale() when it sums the image, and an intensity or tint edit costs no per-point
+// work at all (and stays bit-identical to a build from scratch).
 #pragma once
 
 #include "scene/scene.h"
@@ -24,8 +27,12 @@ struct EnvironmentFactor {
 
 EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level);
 
-// The radiance a camera ray that escapes along dir sees (docs/estimator.md "Environment": the
-// nearest texel after the yaw rotation), for background pixels of the preview.
+// intensity x tint.
+glm::vec3 environmentScale(const scene::Environment& env);
+
+// The radiance per unit environmentScale() a camera ray that escapes along dir sees
+// (docs/estimator.md "Environment": the nearest texel after the yaw rotation), for background
+// pixels of the preview.
 glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& dir);
 
 } // namespace wavelit::relight

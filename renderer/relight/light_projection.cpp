@@ -122,6 +122,15 @@ float spotFalloff(const scene::Light& light, const glm::vec3& fromLight) {
 
 } // namespace
 
+scene::Light unitPowerLight(const scene::Light& light) {
+    scene::Light unit = light;
+    unit.color = glm::vec3(1.0f);
+    unit.intensity = 1.0f;
+    return unit;
+}
+
+glm::vec3 lightPower(const scene::Light& light) { return light.color * light.intensity; }
+
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs) {
     Accumulator acc(dirs);

@@ -28,6 +28,12 @@ struct TexelWeight {
     float distance = 0.0f;  // mean distance to the light's samples in the texel (inf: the sun)
 };
 
+// The light with colour 1 and intensity 1: a light's terms are computed per unit power and
+// multiplied by lightPower() when the image is summed (radiance is linear in it), so an intensity
+// or colour edit costs no per-point work.
+scene::Light unitPowerLight(const scene::Light& light);
+glm::vec3 lightPower(const scene::Light& light); // colour x intensity
+
 // Sorted by texel, one entry per texel, no zero weights. p is the visibility rays' origin.
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs);

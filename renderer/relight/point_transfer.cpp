@@ -175,7 +175,7 @@ glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const Poi
     const glm::vec3 wo = frame.toLocal(p.wo);
     const glm::vec3 origin = rayOrigin(p);
     glm::vec3 sum(0.0f);
-    for (const TexelWeight& e : projectLight(light, origin, *ctx.dirs)) {
+    for (const TexelWeight& e : projectLight(unitPowerLight(light), origin, *ctx.dirs)) {
         if (!testBit(s.above, e.texel)) continue;
         bool seen = testBit(s.lit, e.texel) && !blockedByOthers(s, e.texel);
         if (!seen && std::isfinite(e.distance))

@@ -49,8 +49,8 @@ struct PointState {
     TexelBits lit;   // above, and not blocked by the point's own object
     std::vector<Occlusion> occlusions; // ascending object index
     SparseTransfer transfer;
-    glm::vec3 envTerm{0.0f};
-    std::vector<glm::vec3> lightTerms; // per Scene::lighting.lights entry
+    glm::vec3 envTerm{0.0f};           // per unit environmentScale()
+    std::vector<glm::vec3> lightTerms; // per Scene::lighting.lights entry, per unit lightPower()
     size_t bytes() const;
 };
 
@@ -92,9 +92,9 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
 // T at one texel at full resolution (the factors' product there).
 glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                      size_t texel);
-// 4 pi <T_K, L> from the kept coefficients.
+// 4 pi <T_K, L> from the kept coefficients (per unit intensity x tint).
 glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env);
-// <T, L_k> over the light's texels.
+// <T, L_k> over the light's texels, per unit colour x intensity.
 glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                     const scene::Light& light);
 

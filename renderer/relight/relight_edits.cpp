@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <string_view>
 
 namespace wavelit::relight {
 namespace {
@@ -31,6 +32,19 @@ bool anyOverlap(const TexelBits& a, const TexelBits& b) {
     for (size_t w = 0; w < a.size(); ++w)
         if (a[w] | b[w]) return true;
     return false;
+}
+
+// True when every edit of `ref` in the change set is one of `scalers` (a light's intensity and
+// colour, the environment's intensity and tint): the terms are cached per unit power
+// (environment_factor.h, light_projection.h), so nothing per point changes.
+bool onlyScales(const scene::ChangeSet& changes, scene::EntityRef ref,
+                std::initializer_list<std::string_view> scalers) {
+    for (const scene::Edit& e : changes.edits()) {
+        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
+        if (!edit || edit->entity != ref) continue;
+        if (std::find(scalers.begin(), scalers.end(), edit->property) == scalers.end()) return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -70,6 +84,18 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
                                                         : "display";
 
     util::Timer timer;
+    // Power-only edits: the image sums the cached terms with the new powers, nothing else.
+    if (environment && m_scene->lighting.environment.image == edited.lighting.environment.image &&
+        onlyScales(changes, {scene::EntityKind::Environment, scene::kInvalidId}, {"intensity", "tint"})) {
+        environment = false;
+        summary.factorsRebuilt.push_back("environment power");
+    }
+    std::erase_if(lights, [&](size_t k) {
+        if (!onlyScales(changes, {scene::EntityKind::Light, edited.lighting.lights[k].id}, {"intensity", "color"}))
+            return false;
+        summary.factorsRebuilt.push_back("light power:" + edited.lighting.lights[k].name);
+        return true;
+    });
     std::vector<BoundingSphere> oldBounds;
     for (size_t j : objects) oldBounds.push_back(m_occluders[j].bounds);
     m_scene = std::make_unique<scene::Scene>(edited);

@@ -1,6 +1,7 @@
 #include "relight/relight_preview.h"
 
 #include "relight/camera_lights.h"
+#include "relight/light_projection.h"
 #include "relight/parallel_for.h"
 
 namespace wavelit::relight {
@@ -62,11 +63,13 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
 glm::vec3 RelightPreview::radiance(size_t i) const {
     const glm::vec3 lights =
         lightsSeenByCamera(*m_scene, m_scene->camera.position, -m_points[i].wo, m_points[i].distance);
-    if (!m_points[i].hit) return m_background[i] + lights;
+    const glm::vec3 envScale = environmentScale(m_scene->lighting.environment);
+    if (!m_points[i].hit) return m_background[i] * envScale + lights;
     const PointState& s = m_states[i];
     glm::vec3 sum = lights + m_materials[std::min<size_t>(m_points[i].material, m_materials.size() - 1)].emission;
-    sum += s.envTerm;
-    for (const glm::vec3& l : s.lightTerms) sum += l;
+    sum += s.envTerm * envScale;
+    for (size_t k = 0; k < s.lightTerms.size(); ++k)
+        sum += s.lightTerms[k] * lightPower(m_scene->lighting.lights[k]);
     return sum;
 }
 

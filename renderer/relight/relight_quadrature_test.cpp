@@ -66,7 +66,7 @@ TEST(RelightQuadrature, LightTermEqualsHaarInnerProductAtFullCoefficients) {
         const PointState& s = (*preview)->states()[i];
         if (!p.hit) continue;
         for (size_t k = 0; k < scene.lighting.lights.size(); ++k) {
-            const auto entries = projectLight(scene.lighting.lights[k], rayOrigin(p), *ctx.dirs);
+            const auto entries = projectLight(unitPowerLight(scene.lighting.lights[k]), rayOrigin(p), *ctx.dirs);
             bool open = true;
             std::array<wavelet::SquareGrid, 3> light{wavelet::SquareGrid(settings.level),
                                                      wavelet::SquareGrid(settings.level),
