@@ -38,16 +38,37 @@ private:
 
 } // namespace
 
-EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level) {
+std::shared_ptr<const util::ImageRGB> reduceEquirect(const util::ImageRGB& image, int level) {
+    const int w = image.width, h = image.height;
+    int b = 1;
+    while (w / (2 * b) >= 8 * (1 << level) && w % (2 * b) == 0 && h % (2 * b) == 0) b *= 2;
+    auto out = std::make_shared<util::ImageRGB>(w / b, h / b);
+    for (int oy = 0; oy < out->height; ++oy)
+        for (int ox = 0; ox < out->width; ++ox) {
+            glm::dvec3 sum(0.0);
+            double weight = 0.0;
+            for (int y = oy * b; y < (oy + 1) * b; ++y) {
+                // Solid angle of a texel in row y, up to the constant 2 pi / w.
+                const double omega = std::cos(std::numbers::pi * y / h) - std::cos(std::numbers::pi * (y + 1) / h);
+                for (int x = ox * b; x < (ox + 1) * b; ++x) sum += glm::dvec3(image.at(x, y)) * omega;
+                weight += omega * b;
+            }
+            out->at(ox, oy) = glm::vec3(weight > 0.0 ? sum / weight : glm::dvec3(0.0));
+        }
+    return out;
+}
+
+EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level,
+                                         const util::ImageRGB* reduced) {
     EnvironmentFactor f;
     f.level = level;
     const int side = 1 << level;
     const glm::dvec3 scale(1.0); // per unit intensity x tint (environment_factor.h)
     std::array<wavelet::SquareGrid, 3> grids;
     for (auto& g : grids) g = wavelet::SquareGrid(level);
-    if (env.image && !env.image->empty()) {
+    if (reduced && !reduced->empty()) {
         const YawedOctahedralMap map(env.rotationDeg);
-        const util::ImageRGB face = wavelet::resampleEquirect(*env.image, map, level).front();
+        const util::ImageRGB face = wavelet::resampleEquirect(*reduced, map, level).front();
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x)
                 for (int c = 0; c < 3; ++c) grids[size_t(c)].at(x, y) = double(face.at(x, y)[c]) * scale[c];

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace wavelit::relight {
@@ -25,7 +26,15 @@ struct EnvironmentFactor {
     std::vector<glm::vec3> interleaved;
 };
 
-EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level);
+// The equirect map reduced for a 2^level grid: b x b blocks averaged with their texels' solid
+// angles as weights (the integral over the sphere is kept exactly), b the largest power of two
+// that leaves at least 8 source columns per grid texel across. A rotation edit resamples this
+// (4x fewer texels for the bundled 512 x 256 maps at 32^2), not the file's map.
+std::shared_ptr<const util::ImageRGB> reduceEquirect(const util::ImageRGB& image, int level);
+
+// `reduced`: reduceEquirect(*env.image, level), or null when the environment has no image.
+EnvironmentFactor buildEnvironmentFactor(const scene::Environment& env, int level,
+                                         const util::ImageRGB* reduced);
 
 // intensity x tint.
 glm::vec3 environmentScale(const scene::Environment& env);

@@ -101,7 +101,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     m_scene = std::make_unique<scene::Scene>(edited);
     resolveMaterials();
     if (environment) {
-        m_environment = buildEnvironmentFactor(m_scene->lighting.environment, m_settings.level);
+        buildEnvironment();
         summary.factorsRebuilt.push_back("environment");
     }
     for (size_t k : lights) summary.factorsRebuilt.push_back("light:" + m_scene->lighting.lights[k].name);

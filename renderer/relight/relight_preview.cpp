@@ -49,7 +49,7 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_occluders.clear();
     for (size_t j = 0; j < m_scene->objects.size(); ++j)
         m_occluders.push_back(buildObjectOccluder(*m_scene, j));
-    m_environment = buildEnvironmentFactor(m_scene->lighting.environment, m_settings.level);
+    buildEnvironment();
     m_points = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
     m_states.assign(m_points.size(), PointState{});
     m_background.assign(m_points.size(), glm::vec3(0.0f));
@@ -58,6 +58,16 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
         if (m_points[i].hit) m_states[i] = buildPointState(ctx, m_points[i]);
         else m_background[i] = environmentRadiance(m_scene->lighting.environment, -m_points[i].wo);
     });
+}
+
+void RelightPreview::buildEnvironment() {
+    const scene::Environment& env = m_scene->lighting.environment;
+    const util::ImageRGB* image = env.image && !env.image->empty() ? env.image.get() : nullptr;
+    if (image != m_envSourceOf || !m_envSource) {
+        m_envSource = image ? reduceEquirect(*image, m_settings.level) : nullptr;
+        m_envSourceOf = image;
+    }
+    m_environment = buildEnvironmentFactor(env, m_settings.level, m_envSource.get());
 }
 
 glm::vec3 RelightPreview::radiance(size_t i) const {

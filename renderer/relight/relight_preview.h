@@ -86,6 +86,9 @@ private:
     std::vector<ObjectOccluder> m_occluders;
     std::vector<ResolvedMaterial> m_materials;
     EnvironmentFactor m_environment;
+    std::shared_ptr<const util::ImageRGB> m_envSource; // reduceEquirect of the environment's image
+    const util::ImageRGB* m_envSourceOf = nullptr;     // the image it was reduced from
+    void buildEnvironment();
     std::vector<PreviewPoint> m_points;
     std::vector<PointState> m_states; // empty state for a miss
     std::vector<glm::vec3> m_background; // environment seen by missed rays

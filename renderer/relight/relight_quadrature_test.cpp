@@ -1,8 +1,10 @@
 // The preview's products against brute force (architecture.md §8 "wavelet operations against
 // pixel-domain brute force"), and the shadow region of a moved object (pointsTouched by count).
+#include "relight/environment_factor.h"
 #include "relight/light_projection.h"
 #include "relight/relight_preview.h"
 #include "relight/relight_test_support.h"
+#include "wavelet/equirect_resample.h"
 #include "wavelet/haar.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +94,18 @@ TEST(RelightQuadrature, LightTermEqualsHaarInnerProductAtFullCoefficients) {
         }
     }
     EXPECT_GT(checked, 10u);
+}
+
+// The reduced equirect keeps the map's integral over the sphere (solid-angle-weighted blocks).
+TEST(RelightEnvironment, ReducedEquirectKeepsTheEnergy) {
+    util::ImageRGB image(512, 256);
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 512; ++x) image.at(x, y) = glm::vec3(float((x * 7 + y * 13) % 17), float(y), 1.0f);
+    image.at(100, 40) = glm::vec3(5e4f); // a one-texel sun
+    const auto reduced = reduceEquirect(image, 5);
+    EXPECT_EQ(reduced->width, 256);
+    const glm::dvec3 a = wavelet::equirectEnergy(image), b = wavelet::equirectEnergy(*reduced);
+    EXPECT_LE(relativeError(b, a), 1e-5);
 }
 
 // The float texelOf is the wavelet core's octahedral map: every texel centre maps to its texel.
