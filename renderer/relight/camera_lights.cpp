@@ -1,5 +1,7 @@
 #include "relight/camera_lights.h"
 
+#include "relight/preview_points.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -50,11 +52,21 @@ glm::vec3 seen(const scene::Light& light, const glm::vec3& o, const glm::vec3& d
 }
 } // namespace
 
-glm::vec3 lightsSeenByCamera(const scene::Scene& scene, const glm::vec3& origin, const glm::vec3& dir,
-                             float tMax) {
+glm::vec3 lightSeenAlongRay(const scene::Light& light, const glm::vec3& origin, const glm::vec3& dir,
+                            float tMax) {
+    return seen(light, origin, dir, tMax);
+}
+
+glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, int width, int height,
+                           int x, int y, float tMax) {
+    if (light.type == scene::LightType::Point || light.type == scene::LightType::Spot) return glm::vec3(0.0f);
+    constexpr int kSide = 4;
     glm::vec3 sum(0.0f);
-    for (const scene::Light& light : scene.lighting.lights) sum += seen(light, origin, dir, tMax);
-    return sum;
+    for (int j = 0; j < kSide; ++j)
+        for (int i = 0; i < kSide; ++i)
+            sum += seen(light, camera.position,
+                        cameraRay(camera, width, height, x, y, (i + 0.5f) / kSide, (j + 0.5f) / kSide), tMax);
+    return sum / float(kSide * kSide);
 }
 
 } // namespace wavelit::relight

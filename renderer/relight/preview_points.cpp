@@ -12,14 +12,14 @@ namespace {
 glm::vec3 vec3Of(const float* v) { return glm::vec3(v[0], v[1], v[2]); }
 } // namespace
 
-glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y) {
+glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y, float u, float v) {
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
     const glm::vec3 up = glm::cross(right, forward);
     const float tanHalf = std::tan(0.5f * camera.verticalFovDeg * 3.14159265358979323846f / 180.0f);
     const float aspect = float(width) / float(height);
-    const float sx = (2.0f * (float(x) + 0.5f) / float(width) - 1.0f) * tanHalf * aspect;
-    const float sy = (1.0f - 2.0f * (float(y) + 0.5f) / float(height)) * tanHalf;
+    const float sx = (2.0f * (float(x) + u) / float(width) - 1.0f) * tanHalf * aspect;
+    const float sy = (1.0f - 2.0f * (float(y) + v) / float(height)) * tanHalf;
     return glm::normalize(forward + sx * right + sy * up);
 }
 

@@ -28,8 +28,10 @@ struct PreviewPoint {
     bool operator==(const PreviewPoint&) const = default;
 };
 
-// Unit direction of the ray through the centre of pixel (x, y) of a width x height image.
-glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y);
+// Unit direction of the ray through pixel (x, y) of a width x height image at offset (u, v) in
+// [0,1)^2 inside it (0.5, 0.5: the centre, where the preview points are).
+glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y, float u = 0.5f,
+                    float v = 0.5f);
 
 // The point of pixel (x, y); `bvh` is buildBvh(scene).
 PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,

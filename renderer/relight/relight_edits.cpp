@@ -151,12 +151,14 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
+        for (size_t k : lights) updateCameraLight(k, i);
         if (recast && !(cast[i] == p)) {
             PreviewPoint sameMaterial = p;
             sameMaterial.material = cast[i].material;
             const bool onlyMaterial = p.hit && sameMaterial == cast[i];
             p = cast[i];
             touched[i] = 1;
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i);
             if (onlyMaterial) {
                 rebuildTransfer(ctx, p, s);
                 s.envTerm = environmentTerm(s, m_environment);

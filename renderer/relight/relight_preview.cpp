@@ -53,8 +53,10 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_points = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
     m_states.assign(m_points.size(), PointState{});
     m_background.assign(m_points.size(), glm::vec3(0.0f));
+    m_cameraLights.assign(m_scene->lighting.lights.size(), std::vector<glm::vec3>(m_points.size()));
     const TransferContext ctx = context();
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i);
         if (m_points[i].hit) m_states[i] = buildPointState(ctx, m_points[i]);
         else m_background[i] = environmentRadiance(m_scene->lighting.environment, -m_points[i].wo);
     });
@@ -70,9 +72,17 @@ void RelightPreview::buildEnvironment() {
     m_environment = buildEnvironmentFactor(env, m_settings.level, m_envSource.get());
 }
 
+void RelightPreview::updateCameraLight(size_t k, size_t i) {
+    const int w = m_settings.width;
+    m_cameraLights[k][i] = lightSeenByPixel(unitPowerLight(m_scene->lighting.lights[k]), m_scene->camera, w,
+                                            m_settings.height, int(i % size_t(w)), int(i / size_t(w)),
+                                            m_points[i].distance);
+}
+
 glm::vec3 RelightPreview::radiance(size_t i) const {
-    const glm::vec3 lights =
-        lightsSeenByCamera(*m_scene, m_scene->camera.position, -m_points[i].wo, m_points[i].distance);
+    glm::vec3 lights(0.0f);
+    for (size_t k = 0; k < m_cameraLights.size(); ++k)
+        lights += m_cameraLights[k][i] * lightPower(m_scene->lighting.lights[k]);
     const glm::vec3 envScale = environmentScale(m_scene->lighting.environment);
     if (!m_points[i].hit) return m_background[i] * envScale + lights;
     const PointState& s = m_states[i];

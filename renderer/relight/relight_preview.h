@@ -92,6 +92,9 @@ private:
     std::vector<PreviewPoint> m_points;
     std::vector<PointState> m_states; // empty state for a miss
     std::vector<glm::vec3> m_background; // environment seen by missed rays
+    // Per light, per pixel: the light seen directly by the camera, per unit power.
+    std::vector<std::vector<glm::vec3>> m_cameraLights;
+    void updateCameraLight(size_t k, size_t pixel);
 };
 
 } // namespace wavelit::relight
