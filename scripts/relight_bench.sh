@@ -64,14 +64,14 @@ python3 - "$out" <<'PY'
 import json, sys
 out = sys.argv[1]
 scenes = ["ring_on_ground", "glossy_sphere", "cornell_box"]
-print("| scene | edit | kind | points touched | incremental ms (shared + per point) | full rebuild ms | speed-up |")
-print("|---|---|---|---|---|---|---|")
+print("| scene | edit | kind | points touched | incremental ms (shared + per point) | image ms | from scratch ms | speed-up |")
+print("|---|---|---|---|---|---|---|---|")
 for s in scenes:
     r = json.load(open(f"{out}/{s}-latency.json"))
     for e in r["edits"]:
         print(f"| {s} | {e['entity']} {e['property']} | {e['kind']} | {e['pointsTouched']} | "
-              f"{e['incrementalMs']:.0f} ({e['sharedFactorsMs']:.0f} + {e['perPointMs']:.0f}) | "
-              f"{e['fullRebuildMs']:.0f} | {e['fullRebuildMs'] / e['incrementalMs']:.1f}x |")
+              f"{e['incrementalMs']:.1f} ({e['sharedFactorsMs']:.1f} + {e['perPointMs']:.1f}) | {e['imageMs']:.1f} | "
+              f"{e['fullRebuildMs']:.0f} | {e['fullRebuildMs'] / max(e['incrementalMs'], 1e-3):.0f}x |")
 print()
 print("| scene | points (256^2) | build ms | bytes per point |")
 print("|---|---|---|---|")
