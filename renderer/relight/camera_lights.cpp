@@ -1,7 +1,5 @@
 #include "relight/camera_lights.h"
 
-#include "relight/preview_points.h"
-
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -57,15 +55,14 @@ glm::vec3 lightSeenAlongRay(const scene::Light& light, const glm::vec3& origin, 
     return seen(light, origin, dir, tMax);
 }
 
-glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, int width, int height,
+glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, const CameraRays& rays,
                            int x, int y, float tMax) {
     if (light.type == scene::LightType::Point || light.type == scene::LightType::Spot) return glm::vec3(0.0f);
     constexpr int kSide = 4;
     glm::vec3 sum(0.0f);
     for (int j = 0; j < kSide; ++j)
         for (int i = 0; i < kSide; ++i)
-            sum += seen(light, camera.position,
-                        cameraRay(camera, width, height, x, y, (i + 0.5f) / kSide, (j + 0.5f) / kSide), tMax);
+            sum += seen(light, camera.position, rays.direction(x, y, (i + 0.5f) / kSide, (j + 0.5f) / kSide), tMax);
     return sum / float(kSide * kSide);
 }
 

@@ -7,6 +7,7 @@
 // of the pixel's centre hit, which the edge of a light in front of a wall does not change.
 #pragma once
 
+#include "relight/preview_points.h"
 #include "scene/scene.h"
 
 #include <glm/vec3.hpp>
@@ -17,8 +18,8 @@ namespace wavelit::relight {
 glm::vec3 lightSeenAlongRay(const scene::Light& light, const glm::vec3& origin, const glm::vec3& dir,
                             float tMax);
 
-// The mean of lightSeenAlongRay over 4 x 4 rays across pixel (x, y) of a width x height image.
-glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, int width, int height,
+// The mean of lightSeenAlongRay over 4 x 4 rays across pixel (x, y) of the camera's image.
+glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, const CameraRays& rays,
                            int x, int y, float tMax);
 
 } // namespace wavelit::relight

@@ -12,21 +12,25 @@ namespace {
 glm::vec3 vec3Of(const float* v) { return glm::vec3(v[0], v[1], v[2]); }
 } // namespace
 
-glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y, float u, float v) {
-    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    const float tanHalf = std::tan(0.5f * camera.verticalFovDeg * 3.14159265358979323846f / 180.0f);
-    const float aspect = float(width) / float(height);
-    const float sx = (2.0f * (float(x) + u) / float(width) - 1.0f) * tanHalf * aspect;
-    const float sy = (1.0f - 2.0f * (float(y) + v) / float(height)) * tanHalf;
-    return glm::normalize(forward + sx * right + sy * up);
+CameraRays::CameraRays(const scene::Camera& camera, int width, int height)
+    : m_width(width), m_height(height) {
+    m_forward = glm::normalize(camera.target - camera.position);
+    m_right = glm::normalize(glm::cross(m_forward, camera.up));
+    m_up = glm::cross(m_right, m_forward);
+    m_tanHalf = std::tan(0.5f * camera.verticalFovDeg * 3.14159265358979323846f / 180.0f);
+    m_aspect = float(width) / float(height);
+}
+
+glm::vec3 CameraRays::direction(int x, int y, float u, float v) const {
+    const float sx = (2.0f * (float(x) + u) / float(m_width) - 1.0f) * m_tanHalf * m_aspect;
+    const float sy = (1.0f - 2.0f * (float(y) + v) / float(m_height)) * m_tanHalf;
+    return glm::normalize(m_forward + sx * m_right + sy * m_up);
 }
 
 PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,
                               int x, int y) {
     const glm::vec3 origin = scene.camera.position;
-    const glm::vec3 dir = cameraRay(scene.camera, width, height, x, y);
+    const glm::vec3 dir = CameraRays(scene.camera, width, height).direction(x, y);
     PreviewPoint p;
     p.wo = -dir;
     p.distance = std::numeric_limits<float>::infinity();

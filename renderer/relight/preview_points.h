@@ -28,10 +28,19 @@ struct PreviewPoint {
     bool operator==(const PreviewPoint&) const = default;
 };
 
-// Unit direction of the ray through pixel (x, y) of a width x height image at offset (u, v) in
-// [0,1)^2 inside it (0.5, 0.5: the centre, where the preview points are).
-glm::vec3 cameraRay(const scene::Camera& camera, int width, int height, int x, int y, float u = 0.5f,
-                    float v = 0.5f);
+// The camera's ray directions for a width x height image (the basis computed once).
+class CameraRays {
+public:
+    CameraRays(const scene::Camera& camera, int width, int height);
+    // Unit direction through pixel (x, y) at offset (u, v) in [0,1)^2 inside it (0.5, 0.5: the
+    // centre, where the preview points are).
+    glm::vec3 direction(int x, int y, float u = 0.5f, float v = 0.5f) const;
+
+private:
+    glm::vec3 m_forward, m_right, m_up;
+    float m_tanHalf, m_aspect;
+    int m_width, m_height;
+};
 
 // The point of pixel (x, y); `bvh` is buildBvh(scene).
 PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,

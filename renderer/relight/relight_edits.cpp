@@ -147,18 +147,19 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     summary.sharedMs = timer.milliseconds();
     timer.restart();
     const TransferContext ctx = context();
+    const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     std::vector<uint8_t> touched(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
-        for (size_t k : lights) updateCameraLight(k, i);
+        for (size_t k : lights) updateCameraLight(k, i, rays);
         if (recast && !(cast[i] == p)) {
             PreviewPoint sameMaterial = p;
             sameMaterial.material = cast[i].material;
             const bool onlyMaterial = p.hit && sameMaterial == cast[i];
             p = cast[i];
             touched[i] = 1;
-            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i);
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
             if (onlyMaterial) {
                 rebuildTransfer(ctx, p, s);
                 s.envTerm = environmentTerm(s, m_environment);

@@ -55,8 +55,9 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_background.assign(m_points.size(), glm::vec3(0.0f));
     m_cameraLights.assign(m_scene->lighting.lights.size(), std::vector<glm::vec3>(m_points.size()));
     const TransferContext ctx = context();
+    const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
-        for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i);
+        for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
         if (m_points[i].hit) m_states[i] = buildPointState(ctx, m_points[i]);
         else m_background[i] = environmentRadiance(m_scene->lighting.environment, -m_points[i].wo);
     });
@@ -72,11 +73,10 @@ void RelightPreview::buildEnvironment() {
     m_environment = buildEnvironmentFactor(env, m_settings.level, m_envSource.get());
 }
 
-void RelightPreview::updateCameraLight(size_t k, size_t i) {
+void RelightPreview::updateCameraLight(size_t k, size_t i, const CameraRays& rays) {
     const int w = m_settings.width;
-    m_cameraLights[k][i] = lightSeenByPixel(unitPowerLight(m_scene->lighting.lights[k]), m_scene->camera, w,
-                                            m_settings.height, int(i % size_t(w)), int(i / size_t(w)),
-                                            m_points[i].distance);
+    m_cameraLights[k][i] = lightSeenByPixel(unitPowerLight(m_scene->lighting.lights[k]), m_scene->camera, rays,
+                                            int(i % size_t(w)), int(i / size_t(w)), m_points[i].distance);
 }
 
 glm::vec3 RelightPreview::radiance(size_t i) const {

@@ -94,7 +94,7 @@ private:
     std::vector<glm::vec3> m_background; // environment seen by missed rays
     // Per light, per pixel: the light seen directly by the camera, per unit power.
     std::vector<std::vector<glm::vec3>> m_cameraLights;
-    void updateCameraLight(size_t k, size_t pixel);
+    void updateCameraLight(size_t k, size_t pixel, const CameraRays& rays);
 };
 
 } // namespace wavelit::relight
