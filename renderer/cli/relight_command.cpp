@@ -1,5 +1,5 @@
 // `wavelit-cli relight SCENE --edits EDITS.json --out DIR --report R.json [--reference-spp N]
-//  [--width W --height H] [--preview PW] [--level N] [--keep K] [--threads T]`
+//  [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]`
 // The relighting preview (docs/relighting.md, architecture.md §5.A) of SCENE after each edit of
 // EDITS.json (relight/edit_list.h), applied in order: DIR/edit_<i>.exr is the preview after edit
 // i (linear radiance at the render size: the scene's, or --width/--height), and the report lists
@@ -7,14 +7,15 @@
 // with --reference-spp N also relRMSE = sqrt(relative MSE, render/session/image_metrics.h) against
 // the CPU tracer's direct lighting (bounces 1, N spp, MIS sampler) of the edited scene.
 // --preview: preview points per row (default 256, at most the output width; the height follows
-// the aspect); --level: the
-// sphere grid 2^N squared (default 5); --keep: Haar coefficients of T per point (default 128);
-// --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles).
+// the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² for a lobe narrower
+// than half a 32² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
+// (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "relight/edit_list.h"
 #include "relight/relight_preview.h"
+#include "relight/sphere_level.h"
 #include "render/session/image_metrics.h"
 #include "render/session/render_session.h"
 #include "scene/atomic_file.h"
@@ -80,7 +81,9 @@ int runRelight(const std::vector<std::string>& argv) {
         if (!args->value(flag))
             return reportError(makeError(ErrorKind::Usage, "", std::string("relight needs ") + flag));
     auto refSpp = args->intValue("--reference-spp", 0, 1, 1 << 20);
-    auto level = args->intValue("--level", 5, 1, 7);
+    // --level auto (the default): the grid the scene's materials need (relight/sphere_level.h).
+    const bool autoLevel = !args->value("--level") || *args->value("--level") == "auto";
+    auto level = autoLevel ? util::Result<int>(5) : args->intValue("--level", 5, 1, 7);
     auto keep = args->intValue("--keep", 128, 1, 1 << 14);
     auto threads = args->intValue("--threads", 2, 1, 256);
     auto previewWidth = args->intValue("--preview", kDefaultPreviewWidth, 1, 4096);
@@ -105,7 +108,9 @@ int runRelight(const std::vector<std::string>& argv) {
     relight::RelightSettings settings;
     settings.width = std::min(*previewWidth, *width);
     settings.height = std::max(1, int(std::lround(double(settings.width) * *height / *width)));
-    settings.level = *level;
+    relight::SphereLevelChoice levelChoice{*level, "set by --level"};
+    if (autoLevel) levelChoice = relight::chooseSphereLevel(scene);
+    settings.level = levelChoice.level;
     settings.keep = size_t(*keep);
     settings.threads = *threads;
     const std::filesystem::path out(*args->value("--out"));
@@ -120,7 +125,8 @@ int runRelight(const std::vector<std::string>& argv) {
     nlohmann::ordered_json report;
     report["scene"] = scenePath;
     report["preview"] = {{"width", settings.width}, {"height", settings.height},
-                         {"sphereSide", 1 << settings.level}, {"keep", settings.keep},
+                         {"sphereSide", 1 << settings.level}, {"sphereReason", levelChoice.reason},
+                         {"keep", settings.keep},
                          {"threads", settings.threads}, {"points", (*preview)->hitCount()},
                          {"buildMs", buildMs},
                          {"bytesPerPoint", (*preview)->hitCount() ? double((*preview)->stateBytes()) / double((*preview)->hitCount()) : 0.0}};

@@ -3,6 +3,7 @@
 // per point the same inputs go through the same code, so in practice bit for bit).
 #include "relight/relight_preview.h"
 #include "relight/relight_test_support.h"
+#include "relight/sphere_level.h"
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,16 @@ TEST(RelightPreview, ASequenceOfEditsStaysEqualToFromScratch) {
     auto scratch = RelightPreview::create(scene, testing::smallSettings());
     ASSERT_TRUE(scratch);
     expectSameImage((*preview)->image(), (*scratch)->image());
+}
+
+TEST(RelightSphereLevel, FinerGridOnlyForALobeNarrowerThanHalfATexel) {
+    scene::Scene scene = testing::makeRelightScene(); // GGX r = 0.3 on the box
+    EXPECT_EQ(chooseSphereLevel(scene).level, 5) << chooseSphereLevel(scene).reason;
+    scene.materials[1].roughness = 0.1f;
+    EXPECT_EQ(chooseSphereLevel(scene).level, 6);
+    EXPECT_NE(chooseSphereLevel(scene).reason.find("shiny"), std::string::npos);
+    scene.objects[1].materialId = 1; scene.objects[2].materialId = 1; // the glossy material unused
+    EXPECT_EQ(chooseSphereLevel(scene).level, 5);
 }
 
 TEST(RelightPreview, RefusesBadSettings) {
