@@ -48,7 +48,10 @@ check_render sampling/product 'render/(session|reference|gpu|testing)/|vk/'
 check_render reference 'render/(gpu|testing)/|vk/'
 check_render session 'render/testing/|vk/'
 check_render gpu 'render/testing/'
-check renderer/cli 'cli|render|scene|wavelet|vk|plugins|util'
+# relight (the wavelet relighting preview): scene (with its CPU BVH), wavelet and the BRDF plugins;
+# never render/ (which links Vulkan) and never vk.
+check renderer/relight 'relight|scene|wavelet|plugins|util'
+check renderer/cli 'cli|relight|render|scene|wavelet|vk|plugins|util'
 check editor 'app|viewport|panels|commands|scripting|editor|render|scene|util'
 qt=$(grep -rlnE '#include *<Q[A-Za-z]|#include *<Qt' renderer plugins 2>/dev/null)
 if [ -n "$qt" ]; then

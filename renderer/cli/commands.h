@@ -13,5 +13,6 @@ int runValidate(const std::vector<std::string>& args); // validate_command.cpp
 int runWavelet(const std::vector<std::string>& args);  // wavelet_command.cpp
 int runBench(const std::vector<std::string>& args);    // bench_command.cpp
 int runMix(const std::vector<std::string>& args);      // mix_command.cpp
+int runRelight(const std::vector<std::string>& args);  // relight_command.cpp
 
 } // namespace wavelit::cli

@@ -18,6 +18,8 @@ const char* kUsage =
     "  merge PART.exr [PART.exr ...] -o OUT.exr\n"
     "  mix IN.exr -o OUT.exr|png --weights GROUP=W|GROUP=R:G:B[,...] [--exposure EV]\n"
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
+    "  relight SCENE --edits EDITS.json --out DIR --report R.json [--reference-spp N]\n"
+    "         [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]\n"
     "  validate FILE\n"
     "  wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]\n"
     "  wavelet sample A.exr [B.exr ...] --count N [--seed S] [--keep K] -o SAMPLES.csv\n"
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
     if (command == "wavelet") return wavelit::cli::runWavelet(rest);
     if (command == "bench") return wavelit::cli::runBench(rest);
     if (command == "mix") return wavelit::cli::runMix(rest);
+    if (command == "relight") return wavelit::cli::runRelight(rest);
     std::fprintf(stderr, "wavelit-cli: unknown command '%s'\n%s", command.c_str(), kUsage);
     return 2;
 }

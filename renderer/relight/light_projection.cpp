@@ -1,0 +1,179 @@
+#include "relight/light_projection.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace wavelit::relight {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kMaxSide = 6;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+struct Basis {
+    glm::vec3 t, b;
+};
+Basis basisAround(const glm::vec3& n) {
+    const glm::vec3 ref = std::abs(n.y) > 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    const glm::vec3 t = glm::normalize(glm::cross(ref, n));
+    return {t, glm::cross(n, t)};
+}
+
+// Samples per side for a source of solid angle omega: about one sample per texel it covers (the
+// weights only decide how the light's total splits between neighbouring texels; mapping the
+// samples to texels is most of a light edit's time).
+int sidesFor(double omega, const TexelDirections& dirs) {
+    const double texels = omega / dirs.texelSolidAngle();
+    return std::clamp(int(std::ceil(std::sqrt(texels))), 1, kMaxSide);
+}
+
+class Accumulator {
+public:
+    explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) { m_entries.reserve(kMaxSide * kMaxSide); }
+    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
+        m_entries.push_back({m_dirs.texelOf(dir), weight, distance});
+    }
+    std::vector<TexelWeight> finish() {
+        std::sort(m_entries.begin(), m_entries.end(),
+                  [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
+        std::vector<TexelWeight> out;
+        std::vector<int> counts;
+        for (const TexelWeight& e : m_entries) {
+            if (!out.empty() && out.back().texel == e.texel) {
+                out.back().weight += e.weight;
+                out.back().distance += e.distance;
+                ++counts.back();
+            } else {
+                out.push_back(e);
+                counts.push_back(1);
+            }
+        }
+        for (size_t i = 0; i < out.size(); ++i) out[i].distance /= float(counts[i]);
+        std::erase_if(out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
+        return out;
+    }
+
+private:
+    const TexelDirections& m_dirs;
+    std::vector<TexelWeight> m_entries;
+};
+
+// Uniform radiance `radiance` over the cone of half angle with 1 - cos = oneMinusCos about axis.
+void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axis,
+             double oneMinusCos, const glm::vec3& radiance, float distance) {
+    const double omega = 2.0 * kPi * oneMinusCos;
+    const glm::vec3 total = radiance * float(omega);
+    if (omega < 0.25 * dirs.texelSolidAngle()) return acc.add(axis, total, distance);
+    const int s = sidesFor(omega, dirs);
+    const Basis basis = basisAround(axis);
+    const glm::vec3 each = total / float(s * s);
+    for (int j = 0; j < s; ++j)
+        for (int i = 0; i < s; ++i) {
+            // Uniform in the cone: cos theta uniform in [1 - oneMinusCos, 1].
+            const double u1 = (i + 0.5) / s, u2 = (j + 0.5) / s;
+            const double cosT = 1.0 - u1 * oneMinusCos;
+            const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+            const double phi = 2.0 * kPi * u2;
+            const glm::vec3 d = float(cosT) * axis + float(sinT * std::cos(phi)) * basis.t +
+                                float(sinT * std::sin(phi)) * basis.b;
+            acc.add(d, each, distance);
+        }
+}
+
+void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& light,
+             const glm::vec3& p) {
+    const float area = light.size.x * light.size.y;
+    const float len = glm::length(light.direction);
+    if (!(area > 0.0f) || !(len > 0.0f)) return;
+    const glm::vec3 n = light.direction / len;
+    const Basis basis = basisAround(n); // U = normalize(cross(ref, n)), V = cross(n, U)
+    const glm::vec3 radiance = light.color * light.intensity * float(1.0 / (kPi * double(area)));
+    const glm::vec3 toP = p - light.position;
+    const float d2 = glm::dot(toP, toP);
+    if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
+    const double omega = double(area) * glm::dot(toP, n) / std::sqrt(d2) / d2;
+    const int s = omega < 0.25 * dirs.texelSolidAngle() ? 1 : sidesFor(omega, dirs);
+    for (int j = 0; j < s; ++j)
+        for (int i = 0; i < s; ++i) {
+            const float a = ((i + 0.5f) / s - 0.5f) * light.size.x;
+            const float b = ((j + 0.5f) / s - 0.5f) * light.size.y;
+            const glm::vec3 q = light.position + a * basis.t + b * basis.b;
+            const glm::vec3 d = q - p;
+            const float dist2 = glm::dot(d, d);
+            const float cosLight = -glm::dot(d, n) / std::sqrt(dist2);
+            if (!(cosLight > 0.0f)) continue;
+            acc.add(d, radiance * (area / float(s * s)) * cosLight / dist2, std::sqrt(dist2));
+        }
+}
+
+float spotFalloff(const scene::Light& light, const glm::vec3& fromLight) {
+    const glm::vec3 axis = glm::normalize(light.direction);
+    const float cosAlpha = glm::dot(fromLight, axis);
+    const float cosInner = float(std::cos(double(light.coneInnerDeg) * kPi / 180.0));
+    const float cosOuter = float(std::cos(double(light.coneOuterDeg) * kPi / 180.0));
+    if (!(cosInner > cosOuter)) return cosAlpha >= cosOuter ? 1.0f : 0.0f;
+    const float t = std::clamp((cosAlpha - cosOuter) / (cosInner - cosOuter), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+} // namespace
+
+scene::Light unitPowerLight(const scene::Light& light) {
+    scene::Light unit = light;
+    unit.color = glm::vec3(1.0f);
+    unit.intensity = 1.0f;
+    return unit;
+}
+
+glm::vec3 lightPower(const scene::Light& light) { return light.color * light.intensity; }
+
+std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
+                                      const TexelDirections& dirs) {
+    Accumulator acc(dirs);
+    const glm::vec3 power = light.color * light.intensity;
+    const glm::vec3 toLight = light.position - p;
+    const float d2 = glm::dot(toLight, toLight);
+    switch (light.type) {
+    case scene::LightType::Sphere:
+        if (light.radius > 0.0f) {
+            const float r2 = light.radius * light.radius;
+            if (!(d2 > r2)) break; // inside: the surface emits outward only
+            const double sin2 = double(r2) / double(d2);
+            const double oneMinusCos = sin2 / (1.0 + std::sqrt(1.0 - sin2));
+            // Shadow rays stop at the sphere's near side along its centre direction.
+            addCone(acc, dirs, toLight / std::sqrt(d2), oneMinusCos,
+                    power * float(1.0 / (4.0 * kPi * kPi * double(r2))), std::sqrt(d2) - light.radius);
+            break;
+        }
+        [[fallthrough]];
+    case scene::LightType::Point:
+    case scene::LightType::Spot: {
+        if (!(d2 > 0.0f)) break;
+        const glm::vec3 dir = toLight / std::sqrt(d2);
+        const float falloff = light.type == scene::LightType::Spot ? spotFalloff(light, -dir) : 1.0f;
+        acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
+        break;
+    }
+    case scene::LightType::Rect: addRect(acc, dirs, light, p); break;
+    case scene::LightType::Sun: {
+        const float len = glm::length(light.direction);
+        if (!(len > 0.0f)) break;
+        const glm::vec3 axis = -light.direction / len;
+        const double half = 0.5 * double(light.angularDiameterDeg) * kPi / 180.0;
+        if (half <= 0.0) {
+            acc.add(axis, power, kInfinity);
+            break;
+        }
+        const double s = std::sin(half), sHalf = std::sin(0.5 * half);
+        addCone(acc, dirs, axis, 2.0 * sHalf * sHalf, power * float(1.0 / (kPi * s * s)), kInfinity);
+        break;
+    }
+    }
+    return acc.finish();
+}
+
+} // namespace wavelit::relight

@@ -1,0 +1,39 @@
+// One object as an occluder of the preview points: its own CPU BVH (so its occlusion factor O_j
+// is ray-cast against it alone, paper eq 21) and a bounding sphere of its world-space triangles.
+// The sphere bounds the region the object can shadow: from a point p outside it, the object lies
+// inside the cone of half angle asin(r / |c - p|) about c - p, so O_j = 1 outside that cone and
+// only the texels the cone touches are ray-cast (architecture.md §7: factors of objects that
+// cannot shadow a point are not built).
+#pragma once
+
+#include "relight/texel_directions.h"
+#include "scene/bvh.h"
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+namespace wavelit::relight {
+
+struct BoundingSphere {
+    glm::vec3 centre{0.0f};
+    float radius = -1.0f; // < 0: empty (no triangles)
+};
+
+struct ObjectOccluder {
+    scene::Bvh bvh;
+    BoundingSphere bounds;
+};
+
+ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex);
+
+// The texels of `candidates` whose directions from p may meet the sphere (conservative: widened
+// by the texel radius). Empty bits for an empty sphere.
+TexelBits coneTexels(const BoundingSphere& sphere, const glm::vec3& p, const TexelDirections& dirs,
+                     const TexelBits& candidates);
+
+// Bit t set where the ray from `origin` along texel t's centre direction hits the occluder, for
+// the texels set in `candidates` only.
+TexelBits castOcclusion(const ObjectOccluder& occluder, const glm::vec3& origin,
+                        const TexelDirections& dirs, const TexelBits& candidates);
+
+} // namespace wavelit::relight

@@ -1,0 +1,101 @@
+// One preview point's factors and cached products (paper §4, eqs 21-26; architecture.md §5.A).
+//
+// Factors on the sphere grid, all in the global frame:
+//   Õ1 = self-visibility x cosine: `lit` marks the texels above both the geometric and the shading
+//        horizon that the point's own object does not block; the cosine is max(0, wi . n_s);
+//   O_j = occlusion by object j: `occlusions` holds the blocked texels of each other object that
+//        blocks at least one lit texel (none stored for the others: O_j = 1);
+//   f   = the BRDF toward the camera, the material's plugin eval (plugins/brdf.h), RGB;
+//   L, L_k = environment and lights (environment_factor.h, light_projection.h).
+// T = Õ1 x prod O_j x f is the product of the factors a lighting edit does not touch. It is kept
+// as its K largest Haar coefficients (RGB, ranked by luminance-weighted magnitude) for the
+// environment term 4 pi <T, L>, and evaluated from the factors at a light's few texels for the
+// light terms <T, L_k> (exact at the grid's resolution; a point light needs T at one texel, where
+// K-term truncation error would be largest). The O factors are visibility at infinite distance
+// (right for the environment); a local light is seen when nothing lies between it and the point,
+// so a light texel that they mark blocked gets one shadow ray up to the light's distance (an
+// unblocked one needs none: blocked within a distance implies blocked at infinity). In an open
+// scene that is almost no rays; inside a box (the Cornell box's ceiling light) one per light
+// texel. Lighting is linear, so the radiance is the sum of
+// the environment term and one term per light, each rebuilt alone when its light changes.
+#pragma once
+
+#include "relight/environment_factor.h"
+#include "relight/object_occluder.h"
+#include "relight/preview_points.h"
+#include "relight/texel_directions.h"
+#include "plugins/brdf.h"
+#include "scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace wavelit::relight {
+
+struct Occlusion {
+    uint32_t object = 0;
+    TexelBits blocked;
+};
+
+struct SparseTransfer {
+    std::vector<uint16_t> index; // haar.h dense layout, ascending
+    std::vector<glm::vec3> value;
+};
+
+struct PointState {
+    TexelBits above; // texels above both the geometric and the shading horizon
+    TexelBits lit;   // above, and not blocked by the point's own object
+    std::vector<Occlusion> occlusions; // ascending object index
+    SparseTransfer transfer;
+    glm::vec3 envTerm{0.0f};           // per unit environmentScale()
+    std::vector<glm::vec3> lightTerms; // per Scene::lighting.lights entry, per unit lightPower()
+    size_t bytes() const;
+};
+
+struct ResolvedMaterial {
+    const plugins::Brdf* brdf = nullptr;
+    plugins::BrdfParams params;
+    glm::vec3 emission{0.0f};
+    // A glossy lobe narrower than a texel: f x cosine is averaged over each texel within
+    // cosCap of the mirror direction (TexelDirections::kSub^2 directions) instead of taken at
+    // the centre, which would alias a highlight in or out of the texel.
+    bool narrow = false;
+    float cosCap = 1.0f;
+};
+
+// The material as the preview uses it; texelRadius from the sphere grid.
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius);
+
+// What every point's computation reads; immutable while points are computed in parallel.
+struct TransferContext {
+    const scene::Scene* scene = nullptr;
+    const TexelDirections* dirs = nullptr;
+    const std::vector<ObjectOccluder>* occluders = nullptr; // per Scene::objects entry
+    const scene::Bvh* sceneBvh = nullptr; // every object: shadow rays toward local lights
+    const std::vector<ResolvedMaterial>* materials = nullptr; // per material, + the default last
+    const EnvironmentFactor* environment = nullptr;
+    size_t keep = 128; // K: Haar coefficients of T kept per point (>= 4^n keeps all)
+};
+
+// The ray origin for a point's visibility rays: off the surface along n_g, as the path tracer.
+glm::vec3 rayOrigin(const PreviewPoint& p);
+
+// Everything: self-visibility, every object's occlusion, T, the environment and light terms.
+PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p);
+// Re-casts object j's occlusion over the lit texels its bounding cone may cover and
+// stores it when anything is blocked (never for the point's own object: that is Õ1).
+void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j);
+// Rebuilds T's coefficients from the factors (after f or an O_j changed).
+void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s);
+// T at one texel at full resolution (the factors' product there).
+glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                     size_t texel);
+// 4 pi <T_K, L> from the kept coefficients (per unit intensity x tint).
+glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env);
+// <T, L_k> over the light's texels, per unit colour x intensity.
+glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                    const scene::Light& light);
+
+} // namespace wavelit::relight

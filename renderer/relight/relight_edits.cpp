@@ -1,0 +1,236 @@
+// RelightPreview::applyChanges: which factor an edit changed and where it can matter
+// (relight_preview.h lists the cases; architecture.md §5.A).
+#include "relight/relight_preview.h"
+
+#include "relight/parallel_for.h"
+#include "util/timer.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <string_view>
+
+namespace wavelit::relight {
+namespace {
+
+template <class Entity> size_t indexOf(const std::vector<Entity>& list, scene::EntityId id) {
+    for (size_t i = 0; i < list.size(); ++i)
+        if (list[i].id == id) return i;
+    return list.size();
+}
+
+bool structural(const scene::Scene& a, const scene::Scene& b, const scene::ChangeSet& changes) {
+    if (a.objects.size() != b.objects.size() || a.materials.size() != b.materials.size() ||
+        a.lighting.lights.size() != b.lighting.lights.size())
+        return true;
+    for (const scene::Edit& e : changes.edits())
+        if (std::holds_alternative<scene::EntityEdit>(e)) return true;
+    return false;
+}
+
+bool anyOverlap(const TexelBits& a, const TexelBits& b) {
+    for (size_t w = 0; w < a.size(); ++w)
+        if (a[w] | b[w]) return true;
+    return false;
+}
+
+// True when every edit of `ref` in the change set is one of `scalers` (a light's intensity and
+// colour, the environment's intensity and tint): the terms are cached per unit power
+// (environment_factor.h, light_projection.h), so nothing per point changes.
+bool onlyScales(const scene::ChangeSet& changes, scene::EntityRef ref,
+                std::initializer_list<std::string_view> scalers) {
+    for (const scene::Edit& e : changes.edits()) {
+        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
+        if (!edit || edit->entity != ref) continue;
+        if (std::find(scalers.begin(), scalers.end(), edit->property) == scalers.end()) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes) {
+    EditSummary summary;
+    if (structural(*m_scene, edited, changes)) {
+        rebuildAll(edited);
+        summary.kind = "structure";
+        summary.factorsRebuilt = {"all"};
+        summary.pointsTouched = m_points.size();
+        return summary;
+    }
+    bool environment = false, camera = false, objectMaterial = false;
+    std::vector<size_t> lights, objects;
+    std::vector<uint32_t> materials;
+    for (const scene::Invalidation& inv : changes.invalidations()) {
+        switch (inv.factor) {
+        case scene::FactorKind::Environment: environment = true; break;
+        case scene::FactorKind::Camera: camera = true; break;
+        case scene::FactorKind::Light: lights.push_back(indexOf(edited.lighting.lights, inv.id)); break;
+        case scene::FactorKind::ObjectGeometry: objects.push_back(indexOf(edited.objects, inv.id)); break;
+        case scene::FactorKind::ObjectMaterial: objectMaterial = true; break;
+        case scene::FactorKind::MaterialBrdf:
+            materials.push_back(uint32_t(indexOf(edited.materials, inv.id)));
+            break;
+        case scene::FactorKind::None: break;
+        }
+    }
+    std::erase_if(lights, [&](size_t k) { return k >= edited.lighting.lights.size(); });
+    std::erase_if(objects, [&](size_t j) { return j >= edited.objects.size(); });
+    summary.kind = camera ? "camera"
+                   : !objects.empty() || objectMaterial ? "object"
+                   : !materials.empty()                 ? "material"
+                   : !lights.empty()                    ? "light"
+                   : environment                        ? "environment"
+                                                        : "display";
+
+    util::Timer timer;
+    // Power-only edits: the image sums the cached terms with the new powers, nothing else.
+    if (environment && m_scene->lighting.environment.image == edited.lighting.environment.image &&
+        onlyScales(changes, {scene::EntityKind::Environment, scene::kInvalidId}, {"intensity", "tint"})) {
+        environment = false;
+        summary.factorsRebuilt.push_back("environment power");
+    }
+    std::erase_if(lights, [&](size_t k) {
+        if (!onlyScales(changes, {scene::EntityKind::Light, edited.lighting.lights[k].id}, {"intensity", "color"}))
+            return false;
+        summary.factorsRebuilt.push_back("light power:" + edited.lighting.lights[k].name);
+        return true;
+    });
+    std::vector<BoundingSphere> oldBounds;
+    for (size_t j : objects) oldBounds.push_back(m_occluders[j].bounds);
+    m_scene = std::make_unique<scene::Scene>(edited);
+    resolveMaterials();
+    if (environment) {
+        buildEnvironment();
+        summary.factorsRebuilt.push_back("environment");
+    }
+    for (size_t k : lights) summary.factorsRebuilt.push_back("light:" + m_scene->lighting.lights[k].name);
+    for (uint32_t m : materials) summary.factorsRebuilt.push_back("brdf:" + m_scene->materials[m].name);
+    for (size_t j : objects) {
+        m_occluders[j] = buildObjectOccluder(*m_scene, j);
+        summary.factorsRebuilt.push_back("occlusion:" + m_scene->objects[j].name);
+    }
+    const bool recast = camera || objectMaterial || !objects.empty();
+    std::vector<PreviewPoint> cast;
+    if (recast) {
+        m_bvh = scene::buildBvh(*m_scene);
+        summary.factorsRebuilt.push_back("gbuffer");
+        if (camera) {
+            cast = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
+        } else {
+            // Only rays that meet a changed object's old or new bounding sphere can find another
+            // hit; the others keep their point (the other objects did not move).
+            std::vector<BoundingSphere> spheres = oldBounds;
+            for (size_t j : objects) spheres.push_back(m_occluders[j].bounds);
+            for (const scene::Invalidation& inv : changes.invalidations())
+                if (inv.factor == scene::FactorKind::ObjectMaterial)
+                    if (size_t j = indexOf(edited.objects, inv.id); j < m_occluders.size())
+                        spheres.push_back(m_occluders[j].bounds);
+            cast = m_points;
+            const glm::vec3 eye = m_scene->camera.position;
+            parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
+                const glm::vec3 dir = -cast[i].wo;
+                for (const BoundingSphere& b : spheres) {
+                    const glm::vec3 oc = eye - b.centre;
+                    const float half = glm::dot(oc, dir), c = glm::dot(oc, oc) - b.radius * b.radius;
+                    if (b.radius >= 0.0f && (c <= 0.0f || (half <= 0.0f && half * half >= c))) {
+                        cast[i] = castPreviewPoint(*m_scene, m_bvh, m_settings.width, m_settings.height,
+                                                   int(i % size_t(m_settings.width)),
+                                                   int(i / size_t(m_settings.width)));
+                        return;
+                    }
+                }
+            });
+        }
+    }
+
+    summary.sharedMs = timer.milliseconds();
+    timer.restart();
+    const TransferContext ctx = context();
+    const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
+    std::vector<uint8_t> touched(m_points.size(), 0);
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        PreviewPoint& p = m_points[i];
+        PointState& s = m_states[i];
+        for (size_t k : lights) updateCameraLight(k, i, rays);
+        if (recast && !(cast[i] == p)) {
+            PreviewPoint sameMaterial = p;
+            sameMaterial.material = cast[i].material;
+            const bool onlyMaterial = p.hit && sameMaterial == cast[i];
+            p = cast[i];
+            touched[i] = 1;
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
+            if (onlyMaterial) {
+                rebuildTransfer(ctx, p, s);
+                s.envTerm = environmentTerm(s, m_environment);
+                for (size_t k = 0; k < s.lightTerms.size(); ++k)
+                    s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            } else if (p.hit) {
+                s = buildPointState(ctx, p);
+            } else {
+                s = PointState{};
+                m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
+            }
+            return;
+        }
+        if (!p.hit) {
+            if (environment) {
+                m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
+                touched[i] = 1;
+            }
+            return;
+        }
+        if (std::find(objects.begin(), objects.end(), size_t(p.object)) != objects.end()) {
+            s = buildPointState(ctx, p); // its own object changed under it: Õ1 too
+            touched[i] = 1;
+            return;
+        }
+        bool transfer = std::find(materials.begin(), materials.end(), p.material) != materials.end();
+        bool lightsToo = false; // a moved object may shadow a local light within its distance
+        const glm::vec3 origin = rayOrigin(p);
+        for (size_t n = 0; n < objects.size(); ++n) {
+            const size_t j = objects[n];
+            // The shadow region: texels above the horizon that the old or the new bounding cone
+            // may cover (light shadow rays run in all of them; O_j in the lit ones).
+            if (!anyOverlap(coneTexels(oldBounds[n], origin, m_dirs, s.above),
+                            coneTexels(m_occluders[j].bounds, origin, m_dirs, s.above)))
+                continue;
+            touched[i] = 1;
+            lightsToo = true;
+            const std::vector<Occlusion> before = s.occlusions;
+            updateOcclusion(ctx, p, s, uint32_t(j));
+            const bool same = before.size() == s.occlusions.size() &&
+                              std::equal(before.begin(), before.end(), s.occlusions.begin(),
+                                         [](const Occlusion& a, const Occlusion& b) {
+                                             return a.object == b.object && a.blocked == b.blocked;
+                                         });
+            transfer = transfer || !same;
+        }
+        if (transfer) {
+            touched[i] = 1;
+            rebuildTransfer(ctx, p, s);
+            s.envTerm = environmentTerm(s, m_environment);
+            for (size_t k = 0; k < s.lightTerms.size(); ++k)
+                s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            return;
+        }
+        if (environment) {
+            s.envTerm = environmentTerm(s, m_environment);
+            touched[i] = 1;
+        }
+        if (lightsToo) {
+            for (size_t k = 0; k < s.lightTerms.size(); ++k)
+                s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            return;
+        }
+        for (size_t k : lights) {
+            s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            touched[i] = 1;
+        }
+    });
+    summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
+    summary.pointsMs = timer.milliseconds();
+    return summary;
+}
+
+} // namespace wavelit::relight

@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# The figures of docs/relighting.md: `wavelit-cli relight` on the bundled scenes.
+#  1. latency: every edit kind at a 256^2 preview on 2 threads, incremental vs from scratch;
+#  2. preview resolution: relRMSE of 128^2 output from 128^2 / 64^2 / 32^2 preview points against
+#     a converged direct-lighting reference (CPU tracer, bounces 1, REF_SPP spp);
+#  3. coefficient budget: relRMSE vs K on the same reference.
+# Timings vary with the machine and its load (the report says so); run it on a quiet machine.
+#   bash scripts/relight_bench.sh [CLI] [REF_SPP]   (defaults: build/rel/.../wavelit-cli, 512)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cli=${1:-build/rel/renderer/cli/wavelit-cli}
+spp=${2:-512}
+out=out/relight
+mkdir -p "$out"
+edits() { # scene name -> an edits file with every edit kind that scene has
+    case "$1" in
+    ring_on_ground) cat <<'JSON'
+[{"entity": "environment", "property": "rotation", "value": 90},
+ {"entity": "environment", "property": "intensity", "value": 1.5},
+ {"entity": "light:softbox", "property": "position", "value": [0.5, 3.0, 2.0]},
+ {"entity": "light:softbox", "property": "intensity", "value": 90},
+ {"entity": "material:ground", "property": "baseColor", "value": [0.3, 0.5, 0.7]},
+ {"entity": "material:gold", "property": "roughness", "value": 0.4},
+ {"entity": "object:ring", "property": "translation", "value": [0.3, 0.12, 0.0]}]
+JSON
+    ;;
+    glossy_sphere) cat <<'JSON'
+[{"entity": "environment", "property": "rotation", "value": 120},
+ {"entity": "light:sun", "property": "direction", "value": [0.3, -0.8, -0.5]},
+ {"entity": "material:ground", "property": "baseColor", "value": [0.6, 0.4, 0.3]},
+ {"entity": "material:chrome", "property": "roughness", "value": 0.25},
+ {"entity": "object:sphere", "property": "translation", "value": [0.4, 1.0, 0.0]}]
+JSON
+    ;;
+    cornell_box) cat <<'JSON'
+[{"entity": "light:ceiling_light", "property": "intensity", "value": 30},
+ {"entity": "material:red", "property": "baseColor", "value": [0.2, 0.6, 0.2]},
+ {"entity": "object:small_box", "property": "translation", "value": [0.2, 0.0, 0.1]}]
+JSON
+    ;;
+    esac
+}
+scenes=(ring_on_ground glossy_sphere cornell_box)
+for s in "${scenes[@]}"; do
+    edits "$s" > "$out/$s.edits.json"
+    echo "relight bench: $s latency (256^2 preview)"
+    nice -n 10 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-latency" \
+        --report "$out/$s-latency.json" --preview 256 --width 256 --height 256 --threads 2 >/dev/null
+done
+echo '[{"entity": "environment", "property": "intensity", "value": 1.0}]' > "$out/noop.edits.json"
+for s in "${scenes[@]}"; do
+    for p in 128 64 32; do
+        echo "relight bench: $s preview $p vs ${spp} spp"
+        nice -n 10 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/noop.edits.json" --out "$out/$s-p$p" \
+            --report "$out/$s-p$p.json" --preview "$p" --width 128 --height 128 --reference-spp "$spp" --skip-full-rebuild >/dev/null
+    done
+    for k in 16 64 256 1024; do
+        echo "relight bench: $s K=$k vs ${spp} spp"
+        nice -n 10 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/noop.edits.json" --out "$out/$s-k$k" \
+            --report "$out/$s-k$k.json" --preview 128 --width 128 --height 128 --keep "$k" --reference-spp "$spp" --skip-full-rebuild >/dev/null
+    done
+done
+python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+scenes = ["ring_on_ground", "glossy_sphere", "cornell_box"]
+print("| scene | edit | kind | points touched | incremental ms (shared + per point) | image ms | from scratch ms | speed-up |")
+print("|---|---|---|---|---|---|---|---|")
+for s in scenes:
+    r = json.load(open(f"{out}/{s}-latency.json"))
+    for e in r["edits"]:
+        print(f"| {s} | {e['entity']} {e['property']} | {e['kind']} | {e['pointsTouched']} | "
+              f"{e['incrementalMs']:.1f} ({e['sharedFactorsMs']:.1f} + {e['perPointMs']:.1f}) | {e['imageMs']:.1f} | "
+              f"{e['fullRebuildMs']:.0f} | {e['fullRebuildMs'] / max(e['incrementalMs'], 1e-3):.0f}x |")
+print()
+print("| scene | points (256^2) | build ms | bytes per point |")
+print("|---|---|---|---|")
+for s in scenes:
+    p = json.load(open(f"{out}/{s}-latency.json"))["preview"]
+    print(f"| {s} | {p['points']} | {p['buildMs']:.0f} | {p['bytesPerPoint']:.0f} |")
+print()
+print("| scene | relRMSE, preview 128^2 | 64^2 | 32^2 | build ms 128^2 / 64^2 / 32^2 |")
+print("|---|---|---|---|---|")
+for s in scenes:
+    rs = [json.load(open(f"{out}/{s}-p{p}.json")) for p in (128, 64, 32)]
+    print(f"| {s} | " + " | ".join(f"{r['edits'][0]['relRMSE']:.3f}" for r in rs) + " | " +
+          " / ".join(f"{r['preview']['buildMs']:.0f}" for r in rs) + " |")
+print()
+print("| scene | K = 16 | 64 | 128 | 256 | 1024 (all) |")
+print("|---|---|---|---|---|---|")
+for s in scenes:
+    vals = []
+    for k in (16, 64, 128, 256, 1024):
+        f = f"{out}/{s}-p128.json" if k == 128 else f"{out}/{s}-k{k}.json"
+        vals.append(json.load(open(f))["edits"][0]["relRMSE"])
+    print(f"| {s} | " + " | ".join(f"{v:.3f}" for v in vals) + " |")
+PY
