@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -166,6 +167,88 @@ TEST_F(MeshLoader, PlyHeadersStatingMoreThanTheFileHoldsAreRefused) {
     auto hidden = loadMesh(write("hidden_end.ply", "ply\nformat ascii 1.0\ncomment x\rend_header\n"));
     ASSERT_FALSE(hidden.ok());
     EXPECT_NE(hidden.error().reason.find("PLY header has no 'end_header' line"), std::string::npos) << hidden.error().message();
+}
+
+// fuzz_ply finding (third 10-minute run) and its ascii twin: Assimp sizes a face list from its
+// stated length before reading the items, so a length of 10^9 in a 100-byte file made it allocate
+// 8 GB (binary; it then reported "File corrupted") or 12 GB and run for minutes (ascii). The element
+// data are walked against the file before Assimp reads it.
+TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
+    const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+    auto le32 = [](uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; };
+    auto be32 = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
+    std::string littleVertices, bigVertices;
+    for (float f : xyz) {
+        uint32_t u;
+        std::memcpy(&u, &f, 4);
+        littleVertices += le32(u);
+        bigVertices += be32(u);
+    }
+    const std::string indices = le32(0) + le32(1) + le32(2);
+    auto good = loadMesh(write("good.ply", head + littleVertices + le32(3) + indices));
+    ASSERT_TRUE(good.ok()) << good.error().message();
+    EXPECT_EQ(good->triangleCount(), 1u);
+    std::string bigHead = head;
+    bigHead.replace(bigHead.find("little"), 6, "big");
+    auto big = loadMesh(write("big.ply", bigHead + bigVertices + be32(3) + be32(0) + be32(1) + be32(2)));
+    ASSERT_TRUE(big.ok()) << big.error().message();
+    EXPECT_EQ(big->triangleCount(), 1u);
+
+    auto binary = loadMesh(write("list.ply", head + littleVertices + le32(1000000000) + indices));
+    ASSERT_FALSE(binary.ok());
+    EXPECT_EQ(binary.error().message(), (dir / "list.ply").string() + ": cannot read mesh: PLY element 'face' instance 0 states a list of "
+                                        "1000000000 items of 4 bytes at byte " + std::to_string(head.size() + 40) + ", but only 12 bytes follow");
+    // A negative signed length is a huge unsigned one to Assimp.
+    std::string charHead = head;
+    charHead.replace(charHead.find("list uint"), 9, "list char");
+    auto negative = loadMesh(write("negative.ply", charHead + littleVertices + "\xff" + indices));
+    ASSERT_FALSE(negative.ok());
+    EXPECT_NE(negative.error().reason.find("states a list of 4294967296 items"), std::string::npos) << negative.error().message();
+    // The checked-in finding.
+    const fs::path finding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply/finding_oom_binary_list_length.ply";
+    auto f = loadMesh(finding.string());
+    ASSERT_FALSE(f.ok());
+    EXPECT_NE(f.error().message().find("finding_oom_binary_list_length.ply: cannot read mesh: PLY element 'face' instance 0 states a list of "),
+              std::string::npos) << f.error().message();
+
+    const std::string ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n\n0 0 -1\n";
+    auto lines = loadMesh(write("ascii.ply", ascii + "1000000000 0 1 2\n"));
+    ASSERT_FALSE(lines.ok());
+    EXPECT_EQ(lines.error().message(), (dir / "ascii.ply").string() + ": cannot read mesh: PLY element 'face' instance 0 (line 14) "
+                                       "states a list of 1000000000 items, but the line holds 3 more values");
+    auto words = loadMesh(write("words.ply", ascii + "300000000 a b c\n"));
+    ASSERT_FALSE(words.ok());
+    EXPECT_NE(words.error().reason.find("states a list of 300000000 items, but the line holds 3 more values"), std::string::npos)
+        << words.error().message();
+    auto fine = loadMesh(write("fine.ply", ascii + "3 0 1 2\n"));  // the empty line is skipped, as Assimp does
+    ASSERT_TRUE(fine.ok()) << fine.error().message();
+    EXPECT_EQ(fine->triangleCount(), 1u);
+    std::string typo = ascii + "3 0 1 2\n";
+    typo.replace(typo.find("float y"), 5, "flaot");
+    auto unknown = loadMesh(write("typo.ply", typo));
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_EQ(unknown.error().message(), (dir / "typo.ply").string() +
+                                             ": cannot read mesh: PLY property 'y' of element 'vertex' has an unknown type 'flaot'");
+}
+
+// fuzz_ply finding (first run after the list walk, a timeout): a header whose "end_header" line
+// ends the file without a '\n' hung Assimp 5.2 whenever a header line before it was longer (it
+// re-read that line forever). Such a header is refused; with the '\n' the same file is read.
+TEST_F(MeshLoader, PlyEndHeaderEndingTheFileIsRefused) {
+    auto hang = loadMesh(write("hang.ply", "ply\nformat ascii 1.0\nabcdefghijk\nend_header"));
+    ASSERT_FALSE(hang.ok());
+    EXPECT_EQ(hang.error().message(), (dir / "hang.ply").string() +
+                                          ": cannot read mesh: PLY header's 'end_header' line ends the file without a line end");
+    const fs::path finding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply/finding_hang_unterminated_end_header.ply";
+    auto f = loadMesh(finding.string());
+    ASSERT_FALSE(f.ok());
+    EXPECT_NE(f.error().reason.find("'end_header' line ends the file without a line end"), std::string::npos) << f.error().message();
+    auto read = loadMesh(write("read.ply", "ply\nformat ascii 1.0\nabcdefghijk\nend_header\n"));
+    ASSERT_FALSE(read.ok()); // Assimp reads it and finds no mesh
+    EXPECT_EQ(read.error().message().find("end_header"), std::string::npos) << read.error().message();
 }
 
 // fuzz_gltf finding: a primitive without POSITION drawn as a line loop made Assimp dereference a

@@ -1,0 +1,356 @@
+#include "scene/mesh_loader_ply.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace wavelit::scene {
+
+using util::ErrorKind;
+using util::makeError;
+
+namespace {
+
+// A value Assimp reads as a list length of 2^32 or more (a negative signed length converted to
+// unsigned, a float out of range): far more than any file holds, so one number says "too many".
+constexpr uint64_t kHugeLength = uint64_t(1) << 32;
+
+enum class PlyType { Unknown, Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+// The scalar type names Assimp 5.2 knows.
+PlyType plyType(const std::string& t) {
+    if (t == "char" || t == "int8") return PlyType::Int8;
+    if (t == "uchar" || t == "uint8") return PlyType::UInt8;
+    if (t == "short" || t == "int16") return PlyType::Int16;
+    if (t == "ushort" || t == "uint16") return PlyType::UInt16;
+    if (t == "int" || t == "int32") return PlyType::Int32;
+    if (t == "uint" || t == "uint32") return PlyType::UInt32;
+    if (t == "float" || t == "float32") return PlyType::Float32;
+    if (t == "double" || t == "float64") return PlyType::Float64;
+    return PlyType::Unknown;
+}
+
+// Size in bytes of a binary value; 0 for types Assimp does not know.
+uint64_t plyTypeSize(PlyType t) {
+    switch (t) {
+    case PlyType::Int8: case PlyType::UInt8: return 1;
+    case PlyType::Int16: case PlyType::UInt16: return 2;
+    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
+    case PlyType::Float64: return 8;
+    default: return 0;
+    }
+}
+
+bool isSigned(PlyType t) { return t == PlyType::Int8 || t == PlyType::Int16 || t == PlyType::Int32; }
+bool isFloat(PlyType t) { return t == PlyType::Float32 || t == PlyType::Float64; }
+
+// What Assimp makes of a float read as a list length (a cast to unsigned int, undefined out of range).
+uint64_t lengthFromFloat(double v) { return v >= 0.0 && v < double(kHugeLength) ? uint64_t(v) : kHugeLength; }
+
+struct PlyProperty {
+    std::string name, typeName;
+    bool list = false;
+    PlyType lengthType = PlyType::Unknown, type = PlyType::Unknown; // type: the list's items
+};
+
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<PlyProperty> properties;
+    uint64_t minBytes() const { // a list counts its length field only: its items may be none
+        uint64_t bytes = 0;
+        for (const PlyProperty& p : properties) bytes += plyTypeSize(p.list ? p.lengthType : p.type);
+        return bytes;
+    }
+};
+
+struct PlyHeader {
+    std::string format;
+    uint64_t bytes = 0, lines = 0;
+    bool ended = false, unterminatedEnd = false;
+    std::vector<PlyElement> elements;
+};
+
+// Reads the header as Assimp 5.2 does: it sees a line whole only when it follows a '\n' and ends
+// it at the first '\r', '\f' or '\0'; it takes the first "format" line; "end_header" must start a
+// line (after a '\0' or '\r' it hung Assimp: fuzz_ply finding) and be followed by a '\n'.
+PlyHeader readPlyHeader(std::istream& in) {
+    PlyHeader h;
+    for (std::string line; !h.ended && h.bytes < (1u << 20) && std::getline(in, line);) {
+        h.bytes += line.size() + 1;
+        ++h.lines;
+        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3))));
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
+            // Without a '\n' after it (the file's last bytes), Assimp re-reads a longer header line
+            // before it forever (fuzz_ply finding: "abcdefghijk\nend_header" at the end hung it).
+            h.ended = !in.eof();
+            h.unterminatedEnd = in.eof();
+            break;
+        } else if (word == "format" && h.format.empty()) {
+            words >> h.format;
+        } else if (word == "element") {
+            PlyElement e;
+            long long count = 0;
+            words >> e.name >> count;
+            // Assimp reads the count where an unknown name starts with digits ("element 4444...4vertex 4":
+            // fuzz_ply finding), as a 32-bit value that wraps: that reading counts too.
+            uint32_t fromName = 0;
+            for (size_t i = 0; i < e.name.size() && e.name[i] >= '0' && e.name[i] <= '9'; ++i)
+                fromName = fromName * 10u + uint32_t(e.name[i] - '0');
+            e.count = std::min<uint64_t>(std::max<uint64_t>(uint64_t(std::max(0LL, count)), fromName), uint64_t(1) << 40);
+            h.elements.push_back(e);
+        } else if (word == "property" && !h.elements.empty()) {
+            PlyProperty p;
+            words >> p.typeName;
+            if (p.typeName == "list") {
+                std::string lengthName, itemName;
+                words >> lengthName >> itemName;
+                p.list = true;
+                p.lengthType = plyType(lengthName);
+                p.type = plyType(itemName);
+                p.typeName = "list " + lengthName + " " + itemName;
+            } else {
+                p.type = plyType(p.typeName);
+            }
+            words >> p.name;
+            h.elements.back().properties.push_back(p);
+        }
+    }
+    return h;
+}
+
+// Sequential reads over a file with a block buffer (a binary walk reads a list length per face).
+class ByteWalker {
+public:
+    ByteWalker(std::istream& in, uint64_t size, uint64_t at) : m_in(in), m_size(size), m_at(at), m_block(1 << 16) {}
+    uint64_t at() const { return m_at; }
+    uint64_t left() const { return m_size - m_at; }
+    bool skip(uint64_t n) {
+        if (n > left()) return false;
+        m_at += n;
+        return true;
+    }
+    // The next n (<= 8) bytes as a little-endian unsigned value, or false past the end.
+    bool read(size_t n, bool bigEndian, uint64_t& value) {
+        if (n > left()) return false;
+        value = 0;
+        for (size_t i = 0; i < n; ++i) {
+            if (m_at < m_start || m_at >= m_start + m_filled) fill();
+            const uint64_t byte = uint8_t(m_block[size_t(m_at - m_start)]);
+            value |= byte << (8 * (bigEndian ? n - 1 - i : i));
+            ++m_at;
+        }
+        return true;
+    }
+
+private:
+    void fill() {
+        m_start = m_at;
+        m_in.clear();
+        m_in.seekg(std::streamoff(m_at));
+        m_in.read(m_block.data(), std::streamsize(m_block.size()));
+        m_filled = uint64_t(m_in.gcount());
+    }
+    std::istream& m_in;
+    uint64_t m_size, m_at, m_start = 0, m_filled = 0;
+    std::vector<char> m_block;
+};
+
+// The list length Assimp reads from a binary value (converted to unsigned int as it does).
+uint64_t binaryLength(uint64_t raw, PlyType t) {
+    const uint64_t bits = 8 * plyTypeSize(t);
+    if (t == PlyType::Float32) {
+        float f;
+        const uint32_t u = uint32_t(raw);
+        std::memcpy(&f, &u, 4);
+        return lengthFromFloat(f);
+    }
+    if (t == PlyType::Float64) {
+        double d;
+        std::memcpy(&d, &raw, 8);
+        return lengthFromFloat(d);
+    }
+    if (isSigned(t) && (raw >> (bits - 1)) != 0) return kHugeLength; // negative
+    return raw;
+}
+
+std::string describe(const PlyElement& e, uint64_t instance) {
+    return "element '" + e.name + "' instance " + std::to_string(instance);
+}
+
+// Binary data: Assimp reads every instance of every element, and sizes each list from its stated
+// length before reading the items (a face list stating 10^9 items made it allocate 8 GB: fuzz_ply
+// finding). Every length is checked against the bytes left.
+util::Status walkBinary(const std::string& path, std::istream& in, uint64_t size, const PlyHeader& h) {
+    const bool bigEndian = h.format.size() > 7 && (h.format[7] == 'b' || h.format[7] == 'B');
+    ByteWalker data(in, size, h.bytes);
+    auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
+    for (const PlyElement& e : h.elements) {
+        for (uint64_t i = 0; i < e.count && !e.properties.empty(); ++i) {
+            for (const PlyProperty& p : e.properties) {
+                if (!p.list) {
+                    if (!data.skip(plyTypeSize(p.type)))
+                        return bad("data ends inside " + describe(e, i) + " (the file has " + std::to_string(size) + " bytes)");
+                    continue;
+                }
+                uint64_t raw = 0;
+                if (!data.read(size_t(plyTypeSize(p.lengthType)), bigEndian, raw))
+                    return bad("data ends inside " + describe(e, i) + " (the file has " + std::to_string(size) + " bytes)");
+                const uint64_t length = binaryLength(raw, p.lengthType);
+                if (length > data.left() / plyTypeSize(p.type))
+                    return bad(describe(e, i) + " states a list of " + std::to_string(length) + " items of " +
+                               std::to_string(plyTypeSize(p.type)) + " bytes at byte " + std::to_string(data.at()) +
+                               ", but only " + std::to_string(data.left()) + " bytes follow");
+                data.skip(length * plyTypeSize(p.type));
+            }
+        }
+    }
+    return util::okStatus();
+}
+
+// One ascii value as Assimp's parsers read it from line[c...]: digits for unsigned types (wrapping
+// at 32 bits), a sign and digits for signed ones, a number for floats. Moves c past what it reads
+// (nothing, on text that is not a number: Assimp then reads the same text again) and returns the
+// value as a list length.
+uint64_t readAsciiValue(const std::string& line, size_t& c, PlyType t) {
+    if (isFloat(t)) {
+        const size_t start = c;
+        while (c < line.size() && std::string("+-.0123456789eEnNaAiIfF").find(line[c]) != std::string::npos) ++c;
+        return lengthFromFloat(std::strtod(line.substr(start, c - start).c_str(), nullptr));
+    }
+    bool negative = false;
+    if (isSigned(t) && c < line.size() && (line[c] == '-' || line[c] == '+')) negative = line[c++] == '-';
+    uint32_t wrapped = 0;
+    uint64_t saturated = 0;
+    for (; c < line.size() && line[c] >= '0' && line[c] <= '9'; ++c) {
+        wrapped = wrapped * 10u + uint32_t(line[c] - '0');
+        saturated = std::min(saturated * 10 + uint64_t(line[c] - '0'), kHugeLength);
+    }
+    if (negative && saturated != 0) return kHugeLength;
+    return std::max<uint64_t>(wrapped, saturated); // either reading must fit
+}
+
+// Ascii data: Assimp reads one instance per line (skipping empty lines) and sizes each list from
+// its stated length before reading the items; a face line "1000000000 0 1 2" made it allocate 8 GB
+// and run for minutes (fuzz_ply finding). A list may not state more items than its line holds.
+util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeader& h) {
+    in.clear();
+    in.seekg(std::streamoff(h.bytes));
+    size_t e = 0;
+    uint64_t instance = 0, lineNumber = h.lines;
+    auto skipEmptyElements = [&] { // an element without properties still takes a line per instance
+        while (e < h.elements.size() && h.elements[e].count == 0) ++e;
+    };
+    skipEmptyElements();
+    for (std::string line; e < h.elements.size() && std::getline(in, line);) {
+        ++lineNumber;
+        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3))));
+        if (line.empty()) continue;
+        size_t c = 0;
+        auto skipSpaces = [&] {
+            while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
+            return c < line.size();
+        };
+        const PlyElement& element = h.elements[e];
+        for (const PlyProperty& p : element.properties) {
+            if (!skipSpaces()) break; // Assimp gives up on the rest of the line
+            if (!p.list) {
+                readAsciiValue(line, c, p.type);
+                continue;
+            }
+            const uint64_t length = readAsciiValue(line, c, p.lengthType);
+            uint64_t values = 0;
+            std::istringstream rest(line.substr(c));
+            for (std::string word; rest >> word;) ++values;
+            if (length > values)
+                return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
+                                                              std::to_string(lineNumber) + ") states a list of " +
+                                                              std::to_string(length) + " items, but the line holds " +
+                                                              std::to_string(values) + " more values");
+            for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
+                const size_t before = c;
+                readAsciiValue(line, c, p.type);
+                if (c == before) break; // stuck on text that is not a number, as Assimp is
+            }
+        }
+        if (++instance == element.count) {
+            ++e;
+            instance = 0;
+            skipEmptyElements();
+        }
+    }
+    return util::okStatus();
+}
+
+} // namespace
+
+// Assimp 5.2's PLY reader (fuzz_ply findings):
+// - without an "end_header" line it never returns (at the end of the file it re-reads its last
+//   line forever);
+// - it loops once per element instance the header states, reading past the end of the file, and
+//   allocates for them: "element vertex 4000000000" in a 300-byte file hung or exhausted memory;
+// - it sizes every list from its stated length before reading the items.
+// A file Assimp would read as PLY (a .ply, or one starting with "ply" in any case) is refused unless
+// its header ends with such a line, the instances it states fit in what follows (one line each in
+// ascii, their properties' smallest encoding in binary) and every list fits in what follows it.
+util::Status checkPlyFile(const std::string& path, const std::string& ext) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const uint64_t size = uint64_t(in.tellg());
+    in.seekg(0);
+    char magic[3] = {};
+    in.read(magic, 3);
+    auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
+    // A .ply goes to Assimp's PLY reader whatever it starts with (it skips leading line ends: a
+    // file starting "\nply" without end_header hung it, fuzz_ply finding).
+    if (ext != ".ply" && (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y'))
+        return util::okStatus();
+    in.clear();
+    in.seekg(0);
+    auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
+
+    const PlyHeader h = readPlyHeader(in);
+    if (h.unterminatedEnd) return bad("header's 'end_header' line ends the file without a line end");
+    if (!h.ended) return bad("header has no 'end_header' line");
+    const uint64_t rest = size - std::min(size, h.bytes);
+    uint64_t instances = 0, minBytes = 0;
+    for (const PlyElement& e : h.elements) {
+        instances += e.count;
+        // At least a byte each: Assimp loops and allocates per instance even when the properties
+        // take no bytes it knows of (444444444 instances of an element without known properties
+        // took 8 GB: fuzz_ply finding).
+        minBytes += e.count * std::max<uint64_t>(1, e.minBytes());
+    }
+    const bool ascii = h.format == "ascii", binary = h.format.rfind("binary", 0) == 0;
+    if (ascii) {
+        uint64_t lines = 0;
+        char last = '\n';
+        for (char c; in.get(c);) {
+            lines += c == '\n';
+            last = c;
+        }
+        lines += last != '\n';
+        if (instances > lines)
+            return bad("header states " + std::to_string(instances) + " element instances, but only " +
+                       std::to_string(lines) + " line(s) follow it");
+    } else if (binary && minBytes > rest) {
+        return bad("header states elements of at least " + std::to_string(minBytes) + " bytes, but only " +
+                   std::to_string(rest) + " follow it");
+    }
+    if (!ascii && !binary) return util::okStatus(); // Assimp refuses the format itself
+    // The walks below need every value's type; Assimp drops a property of a type it does not know
+    // and every property after it, so the file would not be read as written anyway.
+    for (const PlyElement& e : h.elements)
+        for (const PlyProperty& p : e.properties)
+            if (p.type == PlyType::Unknown || (p.list && p.lengthType == PlyType::Unknown))
+                return bad("property '" + p.name + "' of element '" + e.name + "' has an unknown type '" + p.typeName + "'");
+    return ascii ? walkAscii(path, in, h) : walkBinary(path, in, size, h);
+}
+
+} // namespace wavelit::scene
