@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 #include <vector>
 
 namespace wavelit::scene {
@@ -59,7 +59,8 @@ struct PlyProperty {
 
 struct PlyElement {
     std::string name;
-    uint64_t count = 0;
+    uint64_t count = 0;       // an upper bound of what Assimp may read: for the size bounds
+    uint64_t assimpCount = 0; // what Assimp reads: for the walks
     std::vector<PlyProperty> properties;
     uint64_t minBytes() const { // a list counts its length field only: its items may be none
         uint64_t bytes = 0;
@@ -75,52 +76,80 @@ struct PlyHeader {
     std::vector<PlyElement> elements;
 };
 
+// The words of a header line as Assimp splits them (at spaces and tabs only).
+std::vector<std::string> headerWords(const std::string& line) {
+    std::vector<std::string> words;
+    for (size_t at = 0; at < line.size();) {
+        const size_t end = std::min(line.size(), line.find_first_of(" \t", at));
+        if (end > at) words.push_back(line.substr(at, end - at));
+        at = end + 1;
+    }
+    return words;
+}
+
+// Assimp's strtoul10: the leading digits of `word`, wrapping at 32 bits.
+uint32_t leadingNumber(const std::string& word) {
+    uint32_t v = 0;
+    for (size_t i = 0; i < word.size() && word[i] >= '0' && word[i] <= '9'; ++i) v = v * 10u + uint32_t(word[i] - '0');
+    return v;
+}
+
 // Reads the header as Assimp 5.2 does: it sees a line whole only when it follows a '\n' and ends
 // it at the first '\r', '\f' or '\0'; it takes the first "format" line; "end_header" must start a
-// line (after a '\0' or '\r' it hung Assimp: fuzz_ply finding) and be followed by a '\n'.
+// line (after a '\0' or '\r' it hung Assimp: fuzz_ply finding) and be followed by a '\n'. An
+// element's properties are the property lines right after it (comments between them allowed): Assimp
+// ignores a property line anywhere else, so the walks below must too (a stray one shifted the walk's
+// lines against Assimp's and hid a 34 GB list from it: fuzz_ply finding).
 PlyHeader readPlyHeader(std::istream& in) {
     PlyHeader h;
+    bool inElement = false;
     for (std::string line; !h.ended && h.bytes < (1u << 20) && std::getline(in, line);) {
         h.bytes += line.size() + 1;
         ++h.lines;
         line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3))));
-        std::istringstream words(line);
-        std::string word;
-        words >> word;
+        const std::vector<std::string> words = headerWords(line);
+        const std::string word = words.empty() ? "" : words[0];
+        auto wordAt = [&](size_t i) { return i < words.size() ? words[i] : std::string(); };
         if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
             // Without a '\n' after it (the file's last bytes), Assimp re-reads a longer header line
             // before it forever (fuzz_ply finding: "abcdefghijk\nend_header" at the end hung it).
             h.ended = !in.eof();
             h.unterminatedEnd = in.eof();
             break;
-        } else if (word == "format" && h.format.empty()) {
-            words >> h.format;
-        } else if (word == "element") {
-            PlyElement e;
-            long long count = 0;
-            words >> e.name >> count;
-            // Assimp reads the count where an unknown name starts with digits ("element 4444...4vertex 4":
-            // fuzz_ply finding), as a 32-bit value that wraps: that reading counts too.
-            uint32_t fromName = 0;
-            for (size_t i = 0; i < e.name.size() && e.name[i] >= '0' && e.name[i] <= '9'; ++i)
-                fromName = fromName * 10u + uint32_t(e.name[i] - '0');
-            e.count = std::min<uint64_t>(std::max<uint64_t>(uint64_t(std::max(0LL, count)), fromName), uint64_t(1) << 40);
-            h.elements.push_back(e);
-        } else if (word == "property" && !h.elements.empty()) {
+        }
+        if (word == "comment") continue;
+        const bool property = word == "property";
+        if (property && inElement) {
             PlyProperty p;
-            words >> p.typeName;
+            p.typeName = wordAt(1);
             if (p.typeName == "list") {
-                std::string lengthName, itemName;
-                words >> lengthName >> itemName;
                 p.list = true;
-                p.lengthType = plyType(lengthName);
-                p.type = plyType(itemName);
-                p.typeName = "list " + lengthName + " " + itemName;
+                p.lengthType = plyType(wordAt(2));
+                p.type = plyType(wordAt(3));
+                p.typeName = "list " + wordAt(2) + " " + wordAt(3);
+                p.name = wordAt(4);
             } else {
                 p.type = plyType(p.typeName);
+                p.name = wordAt(2);
             }
-            words >> p.name;
             h.elements.back().properties.push_back(p);
+        }
+        inElement = inElement && property;
+        if (word == "format" && h.format.empty()) {
+            h.format = wordAt(1);
+        } else if (word == "element") {
+            PlyElement e;
+            e.name = wordAt(1);
+            // Assimp reads the count after the names it knows, and from the name itself otherwise
+            // ("element 4444...4vertex 4": fuzz_ply finding), as a 32-bit value that wraps; the
+            // bounds below take the larger of that and the count as written.
+            static const char* known[] = {"vertex", "face", "tristrips", "edge", "material"};
+            const bool knownName = std::find(std::begin(known), std::end(known), e.name) != std::end(known);
+            e.assimpCount = knownName ? leadingNumber(wordAt(2)) : e.name == "TextureFile" ? 0 : leadingNumber(e.name);
+            const long long written = std::strtoll(wordAt(2).c_str(), nullptr, 10);
+            e.count = std::min<uint64_t>(std::max<uint64_t>(uint64_t(std::max(0LL, written)), e.assimpCount), uint64_t(1) << 40);
+            h.elements.push_back(e);
+            inElement = true;
         }
     }
     return h;
@@ -193,7 +222,7 @@ util::Status walkBinary(const std::string& path, std::istream& in, uint64_t size
     ByteWalker data(in, size, h.bytes);
     auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
     for (const PlyElement& e : h.elements) {
-        for (uint64_t i = 0; i < e.count && !e.properties.empty(); ++i) {
+        for (uint64_t i = 0; i < e.assimpCount && !e.properties.empty(); ++i) {
             for (const PlyProperty& p : e.properties) {
                 if (!p.list) {
                     if (!data.skip(plyTypeSize(p.type)))
@@ -246,7 +275,7 @@ util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeade
     size_t e = 0;
     uint64_t instance = 0, lineNumber = h.lines;
     auto skipEmptyElements = [&] { // an element without properties still takes a line per instance
-        while (e < h.elements.size() && h.elements[e].count == 0) ++e;
+        while (e < h.elements.size() && h.elements[e].assimpCount == 0) ++e;
     };
     skipEmptyElements();
     for (std::string line; e < h.elements.size() && std::getline(in, line);) {
@@ -266,9 +295,9 @@ util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeade
                 continue;
             }
             const uint64_t length = readAsciiValue(line, c, p.lengthType);
-            uint64_t values = 0;
-            std::istringstream rest(line.substr(c));
-            for (std::string word; rest >> word;) ++values;
+            uint64_t values = 0; // words left on the line
+            for (size_t k = c; k < line.size(); ++k)
+                values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
             if (length > values)
                 return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
                                                               std::to_string(lineNumber) + ") states a list of " +
@@ -280,7 +309,7 @@ util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeade
                 if (c == before) break; // stuck on text that is not a number, as Assimp is
             }
         }
-        if (++instance == element.count) {
+        if (++instance == element.assimpCount) {
             ++e;
             instance = 0;
             skipEmptyElements();
@@ -318,6 +347,14 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
     const PlyHeader h = readPlyHeader(in);
     if (h.unterminatedEnd) return bad("header's 'end_header' line ends the file without a line end");
     if (!h.ended) return bad("header has no 'end_header' line");
+    // Assimp 5.2 sizes its vertex and face arrays from the first element of a name and writes the
+    // instances of a second one into them too: a second "element vertex 9" after "element vertex 4"
+    // wrote past the array and corrupted the heap (fuzz_ply finding). Later Assimp versions refuse
+    // a name stated twice; so does this check.
+    for (size_t i = 0; i < h.elements.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (h.elements[j].name == h.elements[i].name)
+                return bad("header states element '" + h.elements[i].name + "' twice");
     const uint64_t rest = size - std::min(size, h.bytes);
     uint64_t instances = 0, minBytes = 0;
     for (const PlyElement& e : h.elements) {

@@ -226,6 +226,21 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
     auto fine = loadMesh(write("fine.ply", ascii + "3 0 1 2\n"));  // the empty line is skipped, as Assimp does
     ASSERT_TRUE(fine.ok()) << fine.error().message();
     EXPECT_EQ(fine->triangleCount(), 1u);
+    // fuzz_ply finding: Assimp reads no count for an element name it does not know (but from the
+    // name's digits) and ignores a property line that does not follow its element; the walk read
+    // "thing" as 4 lines with a property, missed the face list (a float length of -1) on line 10,
+    // and Assimp asked for 34 GB.
+    const std::string stray = "ply\nformat ascii 1.0\nelement thing 4\ncomment x\nstray\nproperty float y\nelement face 1\n"
+                              "property list float int vertex_indices\nend_header\n-1 0 -1\n0\n0\n0\n0\n";
+    auto strayed = loadMesh(write("stray.ply", stray));
+    ASSERT_FALSE(strayed.ok());
+    EXPECT_EQ(strayed.error().message(), (dir / "stray.ply").string() + ": cannot read mesh: PLY element 'face' instance 0 (line 10) "
+                                         "states a list of 4294967296 items, but the line holds 2 more values");
+    const fs::path strayFinding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply/finding_oom_stray_property_line.ply";
+    auto sf = loadMesh(strayFinding.string());
+    ASSERT_FALSE(sf.ok());
+    EXPECT_NE(sf.error().reason.find("PLY element 'face' instance 0 (line 13) states a list of 4294967296 items"), std::string::npos)
+        << sf.error().message();
     std::string typo = ascii + "3 0 1 2\n";
     typo.replace(typo.find("float y"), 5, "flaot");
     auto unknown = loadMesh(write("typo.ply", typo));
@@ -249,6 +264,25 @@ TEST_F(MeshLoader, PlyEndHeaderEndingTheFileIsRefused) {
     auto read = loadMesh(write("read.ply", "ply\nformat ascii 1.0\nabcdefghijk\nend_header\n"));
     ASSERT_FALSE(read.ok()); // Assimp reads it and finds no mesh
     EXPECT_EQ(read.error().message().find("end_header"), std::string::npos) << read.error().message();
+}
+
+// fuzz_ply finding (a crash in the fork run: "attempting free on address which was not malloc()-ed"):
+// Assimp 5.2 sized its vertex array from the first "element vertex 4" and wrote the 9 instances of a
+// second "element vertex 9" into it (heap corruption; a second face element does the same). An
+// element name stated twice is refused.
+TEST_F(MeshLoader, PlyElementStatedTwiceIsRefused) {
+    const std::string faces = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\nelement face 50\n"
+                              "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 0 -1\n";
+    std::string text = faces;
+    for (int i = 0; i < 51; ++i) text += "3 0 1 2\n";
+    auto twice = loadMesh(write("twice.ply", text));
+    ASSERT_FALSE(twice.ok());
+    EXPECT_EQ(twice.error().message(), (dir / "twice.ply").string() + ": cannot read mesh: PLY header states element 'face' twice");
+    const fs::path finding = fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply/finding_heap_second_vertex_element.ply";
+    auto f = loadMesh(finding.string());
+    ASSERT_FALSE(f.ok());
+    EXPECT_NE(f.error().reason.find("PLY header states element 'vertex' twice"), std::string::npos) << f.error().message();
 }
 
 // fuzz_gltf finding: a primitive without POSITION drawn as a line loop made Assimp dereference a
