@@ -1,5 +1,7 @@
 #include "scene/mesh_loader_ply.h"
 
+#include "scene/mesh_loader_ply_header.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -19,141 +21,11 @@ namespace {
 // unsigned, a float out of range): far more than any file holds, so one number says "too many".
 constexpr uint64_t kHugeLength = uint64_t(1) << 32;
 
-enum class PlyType { Unknown, Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-// The scalar type names Assimp 5.2 knows.
-PlyType plyType(const std::string& t) {
-    if (t == "char" || t == "int8") return PlyType::Int8;
-    if (t == "uchar" || t == "uint8") return PlyType::UInt8;
-    if (t == "short" || t == "int16") return PlyType::Int16;
-    if (t == "ushort" || t == "uint16") return PlyType::UInt16;
-    if (t == "int" || t == "int32") return PlyType::Int32;
-    if (t == "uint" || t == "uint32") return PlyType::UInt32;
-    if (t == "float" || t == "float32") return PlyType::Float32;
-    if (t == "double" || t == "float64") return PlyType::Float64;
-    return PlyType::Unknown;
-}
-
-// Size in bytes of a binary value; 0 for types Assimp does not know.
-uint64_t plyTypeSize(PlyType t) {
-    switch (t) {
-    case PlyType::Int8: case PlyType::UInt8: return 1;
-    case PlyType::Int16: case PlyType::UInt16: return 2;
-    case PlyType::Int32: case PlyType::UInt32: case PlyType::Float32: return 4;
-    case PlyType::Float64: return 8;
-    default: return 0;
-    }
-}
-
 bool isSigned(PlyType t) { return t == PlyType::Int8 || t == PlyType::Int16 || t == PlyType::Int32; }
 bool isFloat(PlyType t) { return t == PlyType::Float32 || t == PlyType::Float64; }
 
 // What Assimp makes of a float read as a list length (a cast to unsigned int, undefined out of range).
 uint64_t lengthFromFloat(double v) { return v >= 0.0 && v < double(kHugeLength) ? uint64_t(v) : kHugeLength; }
-
-struct PlyProperty {
-    std::string name, typeName;
-    bool list = false;
-    PlyType lengthType = PlyType::Unknown, type = PlyType::Unknown; // type: the list's items
-};
-
-struct PlyElement {
-    std::string name;
-    uint64_t count = 0;       // an upper bound of what Assimp may read: for the size bounds
-    uint64_t assimpCount = 0; // what Assimp reads: for the walks
-    std::vector<PlyProperty> properties;
-    uint64_t minBytes() const { // a list counts its length field only: its items may be none
-        uint64_t bytes = 0;
-        for (const PlyProperty& p : properties) bytes += plyTypeSize(p.list ? p.lengthType : p.type);
-        return bytes;
-    }
-};
-
-struct PlyHeader {
-    std::string format;
-    uint64_t bytes = 0, lines = 0;
-    bool ended = false, unterminatedEnd = false;
-    std::vector<PlyElement> elements;
-};
-
-// The words of a header line as Assimp splits them (at spaces and tabs only).
-std::vector<std::string> headerWords(const std::string& line) {
-    std::vector<std::string> words;
-    for (size_t at = 0; at < line.size();) {
-        const size_t end = std::min(line.size(), line.find_first_of(" \t", at));
-        if (end > at) words.push_back(line.substr(at, end - at));
-        at = end + 1;
-    }
-    return words;
-}
-
-// Assimp's strtoul10: the leading digits of `word`, wrapping at 32 bits.
-uint32_t leadingNumber(const std::string& word) {
-    uint32_t v = 0;
-    for (size_t i = 0; i < word.size() && word[i] >= '0' && word[i] <= '9'; ++i) v = v * 10u + uint32_t(word[i] - '0');
-    return v;
-}
-
-// Reads the header as Assimp 5.2 does: it sees a line whole only when it follows a '\n' and ends
-// it at the first '\r', '\f' or '\0'; it takes the first "format" line; "end_header" must start a
-// line (after a '\0' or '\r' it hung Assimp: fuzz_ply finding) and be followed by a '\n'. An
-// element's properties are the property lines right after it (comments between them allowed): Assimp
-// ignores a property line anywhere else, so the walks below must too (a stray one shifted the walk's
-// lines against Assimp's and hid a 34 GB list from it: fuzz_ply finding).
-PlyHeader readPlyHeader(std::istream& in) {
-    PlyHeader h;
-    bool inElement = false;
-    for (std::string line; !h.ended && h.bytes < (1u << 20) && std::getline(in, line);) {
-        h.bytes += line.size() + 1;
-        ++h.lines;
-        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3))));
-        const std::vector<std::string> words = headerWords(line);
-        const std::string word = words.empty() ? "" : words[0];
-        auto wordAt = [&](size_t i) { return i < words.size() ? words[i] : std::string(); };
-        if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
-            // Without a '\n' after it (the file's last bytes), Assimp re-reads a longer header line
-            // before it forever (fuzz_ply finding: "abcdefghijk\nend_header" at the end hung it).
-            h.ended = !in.eof();
-            h.unterminatedEnd = in.eof();
-            break;
-        }
-        if (word == "comment") continue;
-        const bool property = word == "property";
-        if (property && inElement) {
-            PlyProperty p;
-            p.typeName = wordAt(1);
-            if (p.typeName == "list") {
-                p.list = true;
-                p.lengthType = plyType(wordAt(2));
-                p.type = plyType(wordAt(3));
-                p.typeName = "list " + wordAt(2) + " " + wordAt(3);
-                p.name = wordAt(4);
-            } else {
-                p.type = plyType(p.typeName);
-                p.name = wordAt(2);
-            }
-            h.elements.back().properties.push_back(p);
-        }
-        inElement = inElement && property;
-        if (word == "format" && h.format.empty()) {
-            h.format = wordAt(1);
-        } else if (word == "element") {
-            PlyElement e;
-            e.name = wordAt(1);
-            // Assimp reads the count after the names it knows, and from the name itself otherwise
-            // ("element 4444...4vertex 4": fuzz_ply finding), as a 32-bit value that wraps; the
-            // bounds below take the larger of that and the count as written.
-            static const char* known[] = {"vertex", "face", "tristrips", "edge", "material"};
-            const bool knownName = std::find(std::begin(known), std::end(known), e.name) != std::end(known);
-            e.assimpCount = knownName ? leadingNumber(wordAt(2)) : e.name == "TextureFile" ? 0 : leadingNumber(e.name);
-            const long long written = std::strtoll(wordAt(2).c_str(), nullptr, 10);
-            e.count = std::min<uint64_t>(std::max<uint64_t>(uint64_t(std::max(0LL, written)), e.assimpCount), uint64_t(1) << 40);
-            h.elements.push_back(e);
-            inElement = true;
-        }
-    }
-    return h;
-}
 
 // Sequential reads over a file with a block buffer (a binary walk reads a list length per face).
 class ByteWalker {
@@ -251,6 +123,18 @@ util::Status walkBinary(const std::string& path, std::istream& in, uint64_t size
 uint64_t readAsciiValue(const std::string& line, size_t& c, PlyType t) {
     if (isFloat(t)) {
         const size_t start = c;
+        if (c < line.size() && (line[c] == '-' || line[c] == '+')) ++c;
+        // Assimp's integer part stops at an overflow of 64 bits and then leaves the text where it
+        // was: a list length after "1234567890123456789012345 7" is read from the first number
+        // (fuzz_ply finding: 16 GB).
+        for (uint64_t v = 0; c < line.size() && line[c] >= '0' && line[c] <= '9'; ++c) {
+            const uint64_t next = v * 10 + uint64_t(line[c] - '0');
+            if (next < v) {
+                c = start;
+                return 0;
+            }
+            v = next;
+        }
         while (c < line.size() && std::string("+-.0123456789eEnNaAiIfF").find(line[c]) != std::string::npos) ++c;
         return lengthFromFloat(std::strtod(line.substr(start, c - start).c_str(), nullptr));
     }
@@ -278,41 +162,43 @@ util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeade
         while (e < h.elements.size() && h.elements[e].assimpCount == 0) ++e;
     };
     skipEmptyElements();
-    for (std::string line; e < h.elements.size() && std::getline(in, line);) {
+    for (std::string fileLine; e < h.elements.size() && std::getline(in, fileLine);) {
         ++lineNumber;
-        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3))));
-        if (line.empty()) continue;
-        size_t c = 0;
-        auto skipSpaces = [&] {
-            while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
-            return c < line.size();
-        };
-        const PlyElement& element = h.elements[e];
-        for (const PlyProperty& p : element.properties) {
-            if (!skipSpaces()) break; // Assimp gives up on the rest of the line
-            if (!p.list) {
-                readAsciiValue(line, c, p.type);
-                continue;
+        for (const auto& segment : assimpLines(fileLine)) {
+            const std::string& line = segment.second;
+            if (e == h.elements.size()) break;
+            size_t c = 0;
+            auto skipSpaces = [&] {
+                while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
+                return c < line.size();
+            };
+            const PlyElement& element = h.elements[e];
+            for (const PlyProperty& p : element.properties) {
+                if (!skipSpaces()) break; // Assimp gives up on the rest of the line
+                if (!p.list) {
+                    readAsciiValue(line, c, p.type);
+                    continue;
+                }
+                const uint64_t length = readAsciiValue(line, c, p.lengthType);
+                uint64_t values = 0; // words left on the line
+                for (size_t k = c; k < line.size(); ++k)
+                    values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
+                if (length > values)
+                    return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
+                                                                  std::to_string(lineNumber) + ") states a list of " +
+                                                                  std::to_string(length) + " items, but the line holds " +
+                                                                  std::to_string(values) + " more values");
+                for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
+                    const size_t before = c;
+                    readAsciiValue(line, c, p.type);
+                    if (c == before) break; // stuck on text that is not a number, as Assimp is
+                }
             }
-            const uint64_t length = readAsciiValue(line, c, p.lengthType);
-            uint64_t values = 0; // words left on the line
-            for (size_t k = c; k < line.size(); ++k)
-                values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
-            if (length > values)
-                return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
-                                                              std::to_string(lineNumber) + ") states a list of " +
-                                                              std::to_string(length) + " items, but the line holds " +
-                                                              std::to_string(values) + " more values");
-            for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
-                const size_t before = c;
-                readAsciiValue(line, c, p.type);
-                if (c == before) break; // stuck on text that is not a number, as Assimp is
+            if (++instance == element.assimpCount) {
+                ++e;
+                instance = 0;
+                skipEmptyElements();
             }
-        }
-        if (++instance == element.assimpCount) {
-            ++e;
-            instance = 0;
-            skipEmptyElements();
         }
     }
     return util::okStatus();

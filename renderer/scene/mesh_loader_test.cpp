@@ -241,6 +241,25 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
     ASSERT_FALSE(sf.ok());
     EXPECT_NE(sf.error().reason.find("PLY element 'face' instance 0 (line 13) states a list of 4294967296 items"), std::string::npos)
         << sf.error().message();
+    // fuzz_ply finding: a float whose integer part overflows 64 bits leaves Assimp's cursor in place,
+    // so the list length is read from that number (wrapped to 32 bits), not from the next word.
+    auto overflow = loadMesh(write("overflow.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                                   "property list uchar int s\nend_header\n1234567890123456789012345678901234567890 7\n"));
+    ASSERT_FALSE(overflow.ok());
+    EXPECT_NE(overflow.error().reason.find("PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items, but the line holds 1 more values"),
+              std::string::npos) << overflow.error().message();
+    // The fuzz_ply findings behind these rules (fifth and sixth runs): an empty line among an element's
+    // property lines (Assimp skips it and keeps reading properties), header lines separated by '\0'
+    // (Assimp ends a line at any line end), the overflowing float above.
+    const std::pair<const char*, const char*> findings[] = {
+        {"finding_oom_empty_line_in_element.ply", "PLY element 'face' instance 0 (line 10) states a list of 4294967296 items"},
+        {"finding_oom_nul_separated_header.ply", "PLY element 'vertex' instance 0 states a list of 807416109 items of 4 bytes"},
+        {"finding_oom_float_overflow_list_length.ply", "PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items"}};
+    for (const auto& [name, reason] : findings) {
+        auto r = loadMesh((fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply" / name).string());
+        ASSERT_FALSE(r.ok()) << name;
+        EXPECT_NE(r.error().reason.find(reason), std::string::npos) << r.error().message();
+    }
     std::string typo = ascii + "3 0 1 2\n";
     typo.replace(typo.find("float y"), 5, "flaot");
     auto unknown = loadMesh(write("typo.ply", typo));
