@@ -153,52 +153,47 @@ uint64_t readAsciiValue(const std::string& line, size_t& c, PlyType t) {
 // Ascii data: Assimp reads one instance per line (skipping empty lines) and sizes each list from
 // its stated length before reading the items; a face line "1000000000 0 1 2" made it allocate 8 GB
 // and run for minutes (fuzz_ply finding). A list may not state more items than its line holds.
-util::Status walkAscii(const std::string& path, std::istream& in, const PlyHeader& h) {
-    in.clear();
-    in.seekg(std::streamoff(h.bytes));
+util::Status walkAscii(const std::string& path, const std::string& bytes, const PlyHeader& h) {
     size_t e = 0;
-    uint64_t instance = 0, lineNumber = h.lines;
+    uint64_t instance = 0;
     auto skipEmptyElements = [&] { // an element without properties still takes a line per instance
         while (e < h.elements.size() && h.elements[e].assimpCount == 0) ++e;
     };
     skipEmptyElements();
-    for (std::string fileLine; e < h.elements.size() && std::getline(in, fileLine);) {
-        ++lineNumber;
-        for (const auto& segment : assimpLines(fileLine)) {
-            const std::string& line = segment.second;
-            if (e == h.elements.size()) break;
-            size_t c = 0;
-            auto skipSpaces = [&] {
-                while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
-                return c < line.size();
-            };
-            const PlyElement& element = h.elements[e];
-            for (const PlyProperty& p : element.properties) {
-                if (!skipSpaces()) break; // Assimp gives up on the rest of the line
-                if (!p.list) {
-                    readAsciiValue(line, c, p.type);
-                    continue;
-                }
-                const uint64_t length = readAsciiValue(line, c, p.lengthType);
-                uint64_t values = 0; // words left on the line
-                for (size_t k = c; k < line.size(); ++k)
-                    values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
-                if (length > values)
-                    return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
-                                                                  std::to_string(lineNumber) + ") states a list of " +
-                                                                  std::to_string(length) + " items, but the line holds " +
-                                                                  std::to_string(values) + " more values");
-                for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
-                    const size_t before = c;
-                    readAsciiValue(line, c, p.type);
-                    if (c == before) break; // stuck on text that is not a number, as Assimp is
-                }
+    AssimpLines lines(bytes, size_t(h.firstDataLine));
+    for (std::string line; e < h.elements.size() && lines.next(line);) {
+        const uint64_t lineNumber = lines.lineNumber();
+        size_t c = 0;
+        auto skipSpaces = [&] {
+            while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
+            return c < line.size();
+        };
+        const PlyElement& element = h.elements[e];
+        for (const PlyProperty& p : element.properties) {
+            if (!skipSpaces()) break; // Assimp gives up on the rest of the line
+            if (!p.list) {
+                readAsciiValue(line, c, p.type);
+                continue;
             }
-            if (++instance == element.assimpCount) {
-                ++e;
-                instance = 0;
-                skipEmptyElements();
+            const uint64_t length = readAsciiValue(line, c, p.lengthType);
+            uint64_t values = 0; // words left on the line
+            for (size_t k = c; k < line.size(); ++k)
+                values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
+            if (length > values)
+                return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
+                                                              std::to_string(lineNumber) + ") states a list of " +
+                                                              std::to_string(length) + " items, but the line holds " +
+                                                              std::to_string(values) + " more values");
+            for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
+                const size_t before = c;
+                readAsciiValue(line, c, p.type);
+                if (c == before) break; // stuck on text that is not a number, as Assimp is
             }
+        }
+        if (++instance == element.assimpCount) {
+            ++e;
+            instance = 0;
+            skipEmptyElements();
         }
     }
     return util::okStatus();
@@ -226,11 +221,17 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
     // file starting "\nply" without end_header hung it, fuzz_ply finding).
     if (ext != ".ply" && (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y'))
         return util::okStatus();
-    in.clear();
-    in.seekg(0);
     auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
+    auto readBytes = [&](uint64_t count) { // the file's first `count` bytes
+        std::string bytes(size_t(std::min(count, size)), '\0');
+        in.clear();
+        in.seekg(0);
+        in.read(bytes.data(), std::streamsize(bytes.size()));
+        return bytes;
+    };
 
-    const PlyHeader h = readPlyHeader(in);
+    std::string bytes = readBytes((1u << 20) + 1);
+    const PlyHeader h = readPlyHeader(bytes);
     if (h.unterminatedEnd) return bad("header's 'end_header' line ends the file without a line end");
     if (!h.ended) return bad("header has no 'end_header' line");
     // Assimp 5.2 sizes its vertex and face arrays from the first element of a name and writes the
@@ -252,11 +253,12 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
     }
     const bool ascii = h.format == "ascii", binary = h.format.rfind("binary", 0) == 0;
     if (ascii) {
+        bytes = readBytes(size);
         uint64_t lines = 0;
         char last = '\n';
-        for (char c; in.get(c);) {
-            lines += c == '\n';
-            last = c;
+        for (size_t i = size_t(h.bytes); i < bytes.size(); ++i) {
+            lines += bytes[i] == '\n';
+            last = bytes[i];
         }
         lines += last != '\n';
         if (instances > lines)
@@ -273,7 +275,7 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
         for (const PlyProperty& p : e.properties)
             if (p.type == PlyType::Unknown || (p.list && p.lengthType == PlyType::Unknown))
                 return bad("property '" + p.name + "' of element '" + e.name + "' has an unknown type '" + p.typeName + "'");
-    return ascii ? walkAscii(path, in, h) : walkBinary(path, in, size, h);
+    return ascii ? walkAscii(path, bytes, h) : walkBinary(path, in, size, h);
 }
 
 } // namespace wavelit::scene

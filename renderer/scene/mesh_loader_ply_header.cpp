@@ -28,16 +28,6 @@ uint64_t plyTypeSize(PlyType t) {
     }
 }
 
-std::vector<std::pair<size_t, std::string>> assimpLines(const std::string& line) {
-    std::vector<std::pair<size_t, std::string>> lines;
-    for (size_t at = 0; at <= line.size();) {
-        const size_t end = std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3), at));
-        if (end > at) lines.emplace_back(at, line.substr(at, end - at));
-        at = end + 1;
-    }
-    return lines;
-}
-
 namespace {
 
 // The words of a header line as Assimp splits them (at spaces and tabs only).
@@ -101,29 +91,43 @@ void readHeaderLine(PlyHeader& h, bool& inElement, const std::string& line) {
 
 } // namespace
 
-// Reads the header as Assimp 5.2 does. Assimp ends a line at any of '\n', '\r', '\f' and '\0' and
-// skips empty lines (assimpLines). "end_header" must start a '\n'-separated line (stricter than
-// Assimp, which sees it anywhere: the first PLY check's rule, kept) and be followed by a '\n'. An
-// element's properties are the property lines right after it (comments between them allowed): Assimp
-// ignores a property line anywhere else, so the walks must too (a stray one, or one after an empty
-// line taken as the end of the element, shifted the walk's lines against Assimp's and hid a
-// 34 GB list from it: fuzz_ply findings).
-PlyHeader readPlyHeader(std::istream& in) {
+bool AssimpLines::next(std::string& line) {
+    auto lineEnd = [&](size_t i) { return m_bytes[i] == '\n' || m_bytes[i] == '\r' || m_bytes[i] == '\f' || m_bytes[i] == '\0'; };
+    if (m_at < m_bytes.size() && lineEnd(m_at)) {
+        const size_t newline = m_bytes.find('\n', m_at);
+        m_at = newline == std::string::npos ? m_bytes.size() : newline + 1;
+    }
+    if (m_at >= m_bytes.size()) return false;
+    m_start = m_at;
+    while (m_at < m_bytes.size() && !lineEnd(m_at)) ++m_at;
+    line.assign(m_bytes, m_start, m_at - m_start);
+    for (; m_counted < m_start; ++m_counted) m_newlines += m_bytes[m_counted] == '\n';
+    ++m_at; // the line end
+    return true;
+}
+
+// Reads the header as Assimp 5.2 does, line by line (AssimpLines). "end_header" must also start a
+// '\n'-separated line (the first PLY check's rule, kept: stricter than Assimp) and be followed by a
+// '\n'. An element's properties are the property lines right after it (comments between them
+// allowed): Assimp ignores a property line anywhere else, so the walks must too (a stray one, or one
+// after an empty line, shifted the walk's lines against Assimp's and hid lists of gigabytes from
+// it: fuzz_ply findings).
+PlyHeader readPlyHeader(const std::string& bytes) {
     PlyHeader h;
     bool inElement = false;
-    for (std::string line; h.bytes < (1u << 20) && std::getline(in, line);) {
-        h.bytes += line.size() + 1;
-        ++h.lines;
-        for (const auto& [start, text] : assimpLines(line)) {
-            if (text.rfind("end_header", 0) == 0 && (text.size() == 10 || text[10] == ' ' || text[10] == '\t')) {
-                // Without a '\n' after it (the file's last bytes), Assimp re-reads a longer header line
-                // before it forever (fuzz_ply finding: "abcdefghijk\nend_header" at the end hung it).
-                h.ended = start == 0 && !in.eof();
-                h.unterminatedEnd = start == 0 && in.eof();
-                return h;
-            }
-            readHeaderLine(h, inElement, text);
+    AssimpLines lines(bytes, 0);
+    for (std::string text; lines.start() < (1u << 20) && lines.next(text);) {
+        if (text.rfind("end_header", 0) == 0 && (text.size() == 10 || text[10] == ' ' || text[10] == '\t')) {
+            // Without a '\n' after it (the file's last bytes), Assimp re-reads a longer header line
+            // before it forever (fuzz_ply finding: "abcdefghijk\nend_header" at the end hung it).
+            const size_t newline = bytes.find('\n', lines.at() - 1);
+            h.ended = lines.startsAfterNewline() && newline != std::string::npos;
+            h.unterminatedEnd = lines.startsAfterNewline() && newline == std::string::npos;
+            h.bytes = newline == std::string::npos ? bytes.size() : newline + 1;
+            h.firstDataLine = std::min(lines.at(), bytes.size());
+            return h;
         }
+        readHeaderLine(h, inElement, text);
     }
     return h;
 }

@@ -5,9 +5,7 @@
 #pragma once
 
 #include <cstdint>
-#include <istream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace wavelit::scene {
@@ -39,16 +37,34 @@ struct PlyElement {
 
 struct PlyHeader {
     std::string format;
-    uint64_t bytes = 0, lines = 0;
+    uint64_t bytes = 0;         // the header's bytes, through the '\n' after end_header (binary data follow)
+    uint64_t firstDataLine = 0; // where Assimp's line reader goes on after end_header (ascii data)
     bool ended = false, unterminatedEnd = false;
     std::vector<PlyElement> elements;
 };
 
-PlyHeader readPlyHeader(std::istream& in);
+// Assimp 5.2's line reader (IOStreamBuffer::getNextLine) over a file's bytes: a line ends at the
+// first of '\n', '\r', '\f', '\0', which is consumed; when the next line would start on another of
+// those, everything up to and including the next '\n' is skipped first (so "1\0" "5\n" is two lines,
+// "1\0\0" "5\n" one: the "5" is lost; and a second empty line in a row is a line). Each line Assimp
+// reads, in the header as in the data, is one of these.
+class AssimpLines {
+public:
+    AssimpLines(const std::string& bytes, size_t at) : m_bytes(bytes), m_at(at) {}
+    // The next line, or false at the end of the bytes.
+    bool next(std::string& line);
+    size_t start() const { return m_start; }        // where the last line starts
+    size_t at() const { return m_at; }              // just past its line end
+    bool startsAfterNewline() const { return m_start == 0 || m_bytes[m_start - 1] == '\n'; }
+    uint64_t lineNumber() const { return m_newlines + 1; } // of the last line's start, counted in '\n's
 
-// The lines Assimp 5.2 sees in one '\n'-separated line of a file, with their offsets in it: it ends
-// a line at any of '\n', '\r', '\f' and '\0' and skips empty ones (a data line "1 0 0\r0 1 0" is
-// two vertices to it).
-std::vector<std::pair<size_t, std::string>> assimpLines(const std::string& line);
+private:
+    const std::string& m_bytes;
+    size_t m_at, m_start = 0, m_counted = 0;
+    uint64_t m_newlines = 0;
+};
+
+// The header at the start of `bytes` (at most its first MiB is read).
+PlyHeader readPlyHeader(const std::string& bytes);
 
 } // namespace wavelit::scene
