@@ -150,9 +150,13 @@ uint64_t readAsciiValue(const std::string& line, size_t& c, PlyType t) {
     return std::max<uint64_t>(wrapped, saturated); // either reading must fit
 }
 
-// Ascii data: Assimp reads one instance per line (skipping empty lines) and sizes each list from
-// its stated length before reading the items; a face line "1000000000 0 1 2" made it allocate 8 GB
-// and run for minutes (fuzz_ply finding). A list may not state more items than its line holds.
+// Ascii data: Assimp reads one instance per line (AssimpLines) and sizes each list from its stated
+// length before reading the items; a face line "1000000000 0 1 2" made it allocate 8 GB and run for
+// minutes (fuzz_ply finding). It parses a line in a buffer it reuses: the line, a '\n', then what
+// longer lines before it left there; after each property it skips spaces and '\r'/'\n', so a line
+// that ends early lets the next property read those leftovers ("0" after a line holding
+// "...2015317023" read a list of 2015317023 items: fuzz_ply finding). The walk parses the same
+// buffer, and a list may not state more items than words left before the next line end.
 util::Status walkAscii(const std::string& path, const std::string& bytes, const PlyHeader& h) {
     size_t e = 0;
     uint64_t instance = 0;
@@ -160,35 +164,40 @@ util::Status walkAscii(const std::string& path, const std::string& bytes, const 
         while (e < h.elements.size() && h.elements[e].assimpCount == 0) ++e;
     };
     skipEmptyElements();
+    auto lineEnd = [](char ch) { return ch == '\n' || ch == '\r' || ch == '\f' || ch == '\0'; };
+    std::string buffer; // Assimp's line buffer (zeros past the longest line so far)
     AssimpLines lines(bytes, size_t(h.firstDataLine));
     for (std::string line; e < h.elements.size() && lines.next(line);) {
-        const uint64_t lineNumber = lines.lineNumber();
+        if (buffer.size() < line.size() + 2) buffer.resize(line.size() + 2, '\0');
+        buffer.replace(0, line.size(), line);
+        buffer[line.size()] = '\n';
         size_t c = 0;
         auto skipSpaces = [&] {
-            while (c < line.size() && (line[c] == ' ' || line[c] == '\t')) ++c;
-            return c < line.size();
+            while (buffer[c] == ' ' || buffer[c] == '\t') ++c;
+            return !lineEnd(buffer[c]);
         };
         const PlyElement& element = h.elements[e];
         for (const PlyProperty& p : element.properties) {
-            if (!skipSpaces()) break; // Assimp gives up on the rest of the line
+            if (!skipSpaces()) break; // Assimp gives up on the rest of the instance
             if (!p.list) {
-                readAsciiValue(line, c, p.type);
-                continue;
+                readAsciiValue(buffer, c, p.type);
+            } else {
+                const uint64_t length = readAsciiValue(buffer, c, p.lengthType);
+                uint64_t values = 0; // words left before the next line end
+                for (size_t k = c; !lineEnd(buffer[k]); ++k)
+                    values += buffer[k] != ' ' && buffer[k] != '\t' && (k == c || buffer[k - 1] == ' ' || buffer[k - 1] == '\t');
+                if (length > values)
+                    return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
+                                                                  std::to_string(lines.lineNumber()) + ") states a list of " +
+                                                                  std::to_string(length) + " items, but the line holds " +
+                                                                  std::to_string(values) + " more values");
+                for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
+                    const size_t before = c;
+                    readAsciiValue(buffer, c, p.type);
+                    if (c == before) break; // stuck on text that is not a number, as Assimp is
+                }
             }
-            const uint64_t length = readAsciiValue(line, c, p.lengthType);
-            uint64_t values = 0; // words left on the line
-            for (size_t k = c; k < line.size(); ++k)
-                values += line[k] != ' ' && line[k] != '\t' && (k == c || line[k - 1] == ' ' || line[k - 1] == '\t');
-            if (length > values)
-                return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + describe(element, instance) + " (line " +
-                                                              std::to_string(lineNumber) + ") states a list of " +
-                                                              std::to_string(length) + " items, but the line holds " +
-                                                              std::to_string(values) + " more values");
-            for (uint64_t k = 0; k < length && skipSpaces(); ++k) {
-                const size_t before = c;
-                readAsciiValue(line, c, p.type);
-                if (c == before) break; // stuck on text that is not a number, as Assimp is
-            }
+            while (buffer[c] == ' ' || buffer[c] == '\t' || buffer[c] == '\r' || buffer[c] == '\n') ++c;
         }
         if (++instance == element.assimpCount) {
             ++e;
