@@ -256,6 +256,7 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
         {"finding_oom_nul_separated_header.ply", "PLY element 'vertex' instance 0 states a list of 807416109 items of 4 bytes"},
         {"finding_oom_float_overflow_list_length.ply", "PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items"},
         {"finding_oom_line_lost_after_two_line_ends.ply", "states a list of"},
+        {"finding_oom_float_overflow_list_length_2.ply", "PLY element 'vertex' instance 1 (line 9) states a list of 4294967296 items"},
         {"finding_oom_stale_line_buffer.ply", "states a list of"}, {"finding_oom_stale_line_buffer_2.ply", "states a list of"}};
     for (const auto& [name, reason] : findings) {
         auto r = loadMesh((fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply" / name).string());
