@@ -121,22 +121,44 @@ util::Status walkBinary(const std::string& path, std::istream& in, uint64_t size
 // (nothing, on text that is not a number: Assimp then reads the same text again) and returns the
 // value as a list length.
 uint64_t readAsciiValue(const std::string& line, size_t& c, PlyType t) {
-    if (isFloat(t)) {
+    if (isFloat(t)) { // fast_atoreal_move (assimp/fast_atof.h)
         const size_t start = c;
-        if (c < line.size() && (line[c] == '-' || line[c] == '+')) ++c;
-        // Assimp's integer part stops at an overflow of 64 bits and then leaves the text where it
-        // was: a list length after "1234567890123456789012345 7" is read from the first number
-        // (fuzz_ply finding: 16 GB).
-        for (uint64_t v = 0; c < line.size() && line[c] >= '0' && line[c] <= '9'; ++c) {
-            const uint64_t next = v * 10 + uint64_t(line[c] - '0');
-            if (next < v) {
-                c = start;
-                return 0;
+        auto digit = [&](size_t i) { return i < line.size() && line[i] >= '0' && line[i] <= '9'; };
+        // strtoul10_64: on an overflow of 64 bits it returns 0 and leaves the cursor on the number,
+        // so a list length after "1234567890123456789012345 7" is read from that number (fuzz_ply
+        // findings: 16-34 GB); false there.
+        auto digits = [&](size_t& i) {
+            const size_t first = i;
+            for (uint64_t v = 0; digit(i); ++i) {
+                const uint64_t next = v * 10 + uint64_t(line[i] - '0');
+                if (next < v) {
+                    i = first;
+                    return false;
+                }
+                v = next;
             }
-            v = next;
+            return true;
+        };
+        if (c < line.size() && (line[c] == '-' || line[c] == '+')) ++c;
+        const size_t number = c;
+        if (line.compare(c, 3, "nan") == 0 || line.compare(c, 3, "inf") == 0 || line.compare(c, 3, "NaN") == 0 ||
+            line.compare(c, 3, "INF") == 0 || line.compare(c, 3, "Inf") == 0)
+            c += 3;
+        else if (!digits(c) || c == number) // overflow, or not a number (Assimp throws: nothing after it matters)
+            return 0;
+        if (c < line.size() && (line[c] == '.' || line[c] == ',') && digit(c + 1)) {
+            for (++c; digit(c);) ++c; // at most 15 digits count, the rest are skipped
+        } else if (c < line.size() && line[c] == '.') {
+            ++c;
         }
-        while (c < line.size() && std::string("+-.0123456789eEnNaAiIfF").find(line[c]) != std::string::npos) ++c;
-        return lengthFromFloat(std::strtod(line.substr(start, c - start).c_str(), nullptr));
+        if (c < line.size() && (line[c] == 'e' || line[c] == 'E')) {
+            ++c;
+            if (c < line.size() && (line[c] == '-' || line[c] == '+')) ++c;
+            if (!digits(c)) return 0; // the exponent overflowed: the cursor stays on it
+        }
+        std::string text = line.substr(start, c - start);
+        std::replace(text.begin(), text.end(), ',', '.');
+        return lengthFromFloat(std::strtod(text.c_str(), nullptr));
     }
     bool negative = false;
     if (isSigned(t) && c < line.size() && (line[c] == '-' || line[c] == '+')) negative = line[c++] == '-';
@@ -243,6 +265,19 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
     const PlyHeader h = readPlyHeader(bytes);
     if (h.unterminatedEnd) return bad("header's 'end_header' line ends the file without a line end");
     if (!h.ended) return bad("header has no 'end_header' line");
+    // Assimp's line reader splits lines at '\0', '\f' and a lone '\r' too, drops text after two line
+    // ends in a row, and parses each line in a buffer holding leftovers of longer ones: header lines
+    // split that way made it read an element count from a neighbouring line (3817748707 instances,
+    // 91 GB: fuzz_ply finding). PLY text never holds those bytes, so the header, and ascii data,
+    // may not either.
+    auto strayLineEnd = [&](const std::string& text, size_t from, size_t to, const std::string& where) -> util::Status {
+        for (size_t i = from; i < std::min(to, text.size()); ++i)
+            if (text[i] == '\0' || text[i] == '\f' || (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n')))
+                return bad(where + " holds a " + (text[i] == '\0' ? "NUL" : text[i] == '\f' ? "form feed" : "carriage return without a newline") +
+                           " at byte " + std::to_string(i));
+        return util::okStatus();
+    };
+    if (auto s = strayLineEnd(bytes, 0, size_t(h.bytes), "header"); !s) return s;
     // Assimp 5.2 sizes its vertex and face arrays from the first element of a name and writes the
     // instances of a second one into them too: a second "element vertex 9" after "element vertex 4"
     // wrote past the array and corrupted the heap (fuzz_ply finding). Later Assimp versions refuse
@@ -263,6 +298,7 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
     const bool ascii = h.format == "ascii", binary = h.format.rfind("binary", 0) == 0;
     if (ascii) {
         bytes = readBytes(size);
+        if (auto s = strayLineEnd(bytes, size_t(h.bytes), bytes.size(), "ascii data"); !s) return s;
         uint64_t lines = 0;
         char last = '\n';
         for (size_t i = size_t(h.bytes); i < bytes.size(); ++i) {

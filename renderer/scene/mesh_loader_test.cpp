@@ -243,37 +243,46 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
         << sf.error().message();
     // fuzz_ply finding: a float whose integer part overflows 64 bits leaves Assimp's cursor in place,
     // so the list length is read from that number (wrapped to 32 bits), not from the next word.
-    auto overflow = loadMesh(write("overflow.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
-                                                   "property list uchar int s\nend_header\n1234567890123456789012345678901234567890 7\n"));
-    ASSERT_FALSE(overflow.ok());
-    EXPECT_NE(overflow.error().reason.find("PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items, but the line holds 1 more values"),
-              std::string::npos) << overflow.error().message();
-    // The fuzz_ply findings behind these rules (fifth and sixth runs): an empty line among an element's
-    // property lines (Assimp skips it and keeps reading properties), header lines separated by '\0'
-    // (Assimp ends a line at any line end), the overflowing float above.
+    for (const char* number : {"1234567890123456789012345678901234567890", "1e1234567890123456789012345"}) { // integer part, exponent
+        auto overflow = loadMesh(write("overflow.ply", std::string("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                                                   "property list uchar int s\nend_header\n") + number + " 7\n"));
+        ASSERT_FALSE(overflow.ok());
+        EXPECT_NE(overflow.error().reason.find("PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items, but the line holds 1 more values"),
+                  std::string::npos) << overflow.error().message();
+    }
+    // The fuzz_ply findings behind these rules (sixth and seventh runs, the short ctest run): an empty
+    // line among an element's property lines (Assimp skips it and keeps reading properties); the
+    // others held NULs (lines split where the walk did not split them; refused now).
     const std::pair<const char*, const char*> findings[] = {
         {"finding_oom_empty_line_in_element.ply", "PLY element 'face' instance 0 (line 10) states a list of 4294967296 items"},
-        {"finding_oom_nul_separated_header.ply", "PLY element 'vertex' instance 0 states a list of 807416109 items of 4 bytes"},
-        {"finding_oom_float_overflow_list_length.ply", "PLY element 'vertex' instance 0 (line 7) states a list of 4294967296 items"},
-        {"finding_oom_line_lost_after_two_line_ends.ply", "states a list of"},
-        {"finding_oom_float_overflow_list_length_2.ply", "PLY element 'vertex' instance 1 (line 9) states a list of 4294967296 items"},
-        {"finding_oom_stale_line_buffer.ply", "states a list of"}, {"finding_oom_stale_line_buffer_2.ply", "states a list of"}};
+        {"finding_oom_nul_separated_header.ply", "PLY header holds a NUL at byte 38"},
+        {"finding_oom_float_overflow_list_length.ply", "PLY ascii data holds a NUL at byte 189"},
+        {"finding_oom_line_lost_after_two_line_ends.ply", "PLY ascii data holds a NUL at byte 153"},
+        {"finding_oom_float_overflow_list_length_2.ply", "PLY header holds a NUL at byte 49"},
+        {"finding_oom_stale_line_buffer.ply", "PLY ascii data holds a NUL at byte 189"}, {"finding_oom_stale_line_buffer_2.ply", "PLY ascii data holds a NUL at byte 191"}};
     for (const auto& [name, reason] : findings) {
         auto r = loadMesh((fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply" / name).string());
         ASSERT_FALSE(r.ok()) << name;
         EXPECT_NE(r.error().reason.find(reason), std::string::npos) << r.error().message();
     }
-    // Assimp's line reader: after a line end followed by another ("\0\0", "\r\r"), it skips to the next
-    // '\n', losing what is between; a single one just ends a line. Here the lost "5" makes Assimp read
-    // the face from "999999999 0" (bad_alloc natively: fuzz_ply finding, seventh run).
+    // Assimp's line reader also ends lines at '\0', '\f' and a lone '\r', and after two line ends in a
+    // row skips to the next '\n', losing the text between: here the lost "5" made Assimp read the face
+    // from "999999999 0" (bad_alloc natively: fuzz_ply finding, seventh run). PLY text holds none of
+    // those bytes: they are refused, naming the byte.
     const std::string lost = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nelement face 1\n"
                              "property list uint int vertex_indices\nend_header\n1";
-    for (const std::string& ends : {std::string("\0\0", 2), std::string("\r\r")}) {
-        auto r = loadMesh(write("lost.ply", lost + ends + "5\n2\n999999999 0\n3 0 1 1\n"));
+    const std::pair<std::string, std::string> ends[] = {{std::string("\0\0", 2), "NUL"}, {"\r\r", "carriage return without a newline"},
+                                                        {"\f", "form feed"}};
+    for (const auto& [end, name] : ends) {
+        auto r = loadMesh(write("lost.ply", lost + end + "5\n2\n999999999 0\n3 0 1 1\n"));
         ASSERT_FALSE(r.ok());
-        EXPECT_EQ(r.error().message(), (dir / "lost.ply").string() + ": cannot read mesh: PLY element 'face' instance 0 (line 10) "
-                                       "states a list of 999999999 items, but the line holds 1 more values");
+        EXPECT_EQ(r.error().message(), (dir / "lost.ply").string() + ": cannot read mesh: PLY ascii data holds a " + name + " at byte " +
+                                           std::to_string(lost.size()));
     }
+    auto crlf = loadMesh(write("crlf.ply", "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\n"
+                                           "property float z\r\nelement face 1\r\nproperty list uchar int vertex_indices\r\n"
+                                           "end_header\r\n0 0 0\r\n1 0 0\r\n0 0 -1\r\n3 0 1 2\r\n"));
+    ASSERT_TRUE(crlf.ok()) << crlf.error().message();
     // Assimp parses a line in a buffer that still holds the end of a longer line before it, and skips
     // the '\n' after a property: "0 " after "1 1 2015317023" is a vertex x = 0 with a list of
     // 2015317023 items read from the leftovers (fuzz_ply finding; bad_alloc natively).
