@@ -259,7 +259,11 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
         {"finding_oom_float_overflow_list_length.ply", "PLY ascii data holds a NUL at byte 189"},
         {"finding_oom_line_lost_after_two_line_ends.ply", "PLY ascii data holds a NUL at byte 153"},
         {"finding_oom_float_overflow_list_length_2.ply", "PLY header holds a NUL at byte 49"},
-        {"finding_oom_stale_line_buffer.ply", "PLY ascii data holds a NUL at byte 189"}, {"finding_oom_stale_line_buffer_2.ply", "PLY ascii data holds a NUL at byte 191"}};
+        {"finding_oom_stale_line_buffer.ply", "PLY ascii data holds a NUL at byte 189"},
+        {"finding_oom_stale_line_buffer_2.ply", "PLY ascii data holds a NUL at byte 191"},
+        {"finding_oom_nul_split_element_count.ply", "PLY header holds a NUL at byte 36"},
+        {"finding_oom_exponent_overflow.ply", "PLY ascii data holds a NUL at byte 189"},
+        {"finding_oom_nul_in_header_line.ply", "PLY header holds a NUL at byte 175"}};
     for (const auto& [name, reason] : findings) {
         auto r = loadMesh((fs::path(WAVELIT_TEST_DATA_DIR) / "../fuzz/corpus/fuzz_ply" / name).string());
         ASSERT_FALSE(r.ok()) << name;
