@@ -278,6 +278,12 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
         return util::okStatus();
     };
     if (auto s = strayLineEnd(bytes, 0, size_t(h.bytes), "header"); !s) return s;
+    if (!h.malformed.empty()) {
+        std::string shown = h.malformed.substr(0, 40);
+        for (char& ch : shown)
+            if (ch < 0x20 || ch > 0x7e) ch = '?';
+        return bad("header line '" + shown + (h.malformed.size() > 40 ? "..." : "") + "' is not 'element NAME COUNT'");
+    }
     // Assimp 5.2 sizes its vertex and face arrays from the first element of a name and writes the
     // instances of a second one into them too: a second "element vertex 9" after "element vertex 4"
     // wrote past the array and corrupted the heap (fuzz_ply finding). Later Assimp versions refuse

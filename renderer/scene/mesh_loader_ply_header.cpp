@@ -74,6 +74,11 @@ void readHeaderLine(PlyHeader& h, bool& inElement, const std::string& line) {
     if (word == "format" && h.format.empty()) {
         h.format = wordAt(1);
     } else if (word == "element") {
+        // "element NAME COUNT" and nothing else: Assimp read the count of a shorter element line
+        // from the leftovers of a longer line before it in its line buffer (3817748707 instances,
+        // 91 GB: fuzz_ply finding).
+        if (h.malformed.empty() && (words.size() != 3 || wordAt(2).find_first_not_of("0123456789") != std::string::npos))
+            h.malformed = line;
         PlyElement e;
         e.name = wordAt(1);
         // Assimp reads the count after the names it knows, and from the name itself otherwise

@@ -40,6 +40,7 @@ struct PlyHeader {
     uint64_t bytes = 0;         // the header's bytes, through the '\n' after end_header (binary data follow)
     uint64_t firstDataLine = 0; // where Assimp's line reader goes on after end_header (ascii data)
     bool ended = false, unterminatedEnd = false;
+    std::string malformed; // the first element line that is not "element NAME COUNT"
     std::vector<PlyElement> elements;
 };
 
