@@ -142,6 +142,11 @@ def main():
     # A header stating 16384x16384 over no pixels (issue 15: every load allocated 3 GiB before failing).
     files["huge_header.hdr"] = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 16384\n"
     files["not_an_image.hdr"] = b"this is a text file, not a Radiance picture\n"
+    # A chunk stating 2020175872 bytes of pixel data in a small file (issue 15: refused before OpenEXR reads it).
+    chunked = bytearray(exr_bytes(8, 4, lambda x, y: (0.5, 0.5, 0.5)))
+    first_chunk = struct.unpack_from("<Q", chunked, header_end(chunked))[0]
+    struct.pack_into("<i", chunked, first_chunk + 4, 2020175872)
+    files["chunk_past_end.exr"] = bytes(chunked)
 
     # --- meshes ---
     files["nan_vertex.obj"] = obj(["v 0 0 0", "v nan 0 0", "v 0 0 -1", "f 1 2 3"])
@@ -156,6 +161,10 @@ def main():
     files["stray_bracket.ply"] = (b"ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                                   b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                                   b"-1 0 -1\n1 0 -1\n1 0 1\n-1 0 1\n[ 0 3 2 1\n")
+    # A binary face list stating 10^9 indices in a 100-byte file (fuzz_ply finding: Assimp allocated 8 GB).
+    files["list_past_end.ply"] = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                  b"property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n" +
+                                  struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 0, -1) + struct.pack("<I3i", 10**9, 0, 1, 2))
     # A GLB stating a 4 GB JSON chunk in 29 bytes (fuzz_gltf finding: Assimp allocated it).
     files["huge_chunk.glb"] = b"glTF" + struct.pack("<III", 2, 4096, 0xF7000010) + b"JSON{bufferVi"
     files["truncated.glb"] = b"glTF" + struct.pack("<II", 2, 4096) + b"\x10\x00\x00\x00JSON{\"asset\":"

@@ -1,6 +1,7 @@
 #include "scene/image_io.h"
 
 #include "scene/atomic_file.h"
+#include "scene/image_io_exr_check.h"
 #include "scene/load_guard.h"
 #include "scene/radiance_hdr.h"
 #include "util/path_util.h"
@@ -32,38 +33,9 @@ namespace {
 
 using util::lowerExtension;
 
-// OpenEXR 3.1 allocates each header attribute's stated size before reading it: a few hundred
-// bytes stating a 1.6 GB attribute made every load reserve 1.6 GB (fuzz_exr: slow units and
-// timeouts under AddressSanitizer, which touches what is reserved). The first header's attribute
-// sizes are checked against the bytes that follow them; a header this walk cannot follow is left
-// to OpenEXR, which reports it.
-util::Status checkExrAttributeSizes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    const uint64_t size = uint64_t(in.tellg());
-    in.seekg(8); // magic number and version field
-    for (int attributes = 0; attributes < 4096; ++attributes) {
-        std::string name, type;
-        if (!std::getline(in, name, '\0') || name.empty() || name.size() > 255) return util::okStatus();
-        if (!std::getline(in, type, '\0') || type.size() > 255) return util::okStatus();
-        uint8_t b[4];
-        if (!in.read(reinterpret_cast<char*>(b), 4)) return util::okStatus();
-        const uint32_t bytes = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-        const uint64_t at = uint64_t(in.tellg());
-        if (at + bytes > size) {
-            for (char& c : name)
-                if (c < 0x20 || c > 0x7e) c = '?'; // a corrupt name is shown, not printed raw
-            if (name.size() > 40) name = name.substr(0, 40) + "...";
-            return makeError(ErrorKind::Format, path, "cannot read EXR: attribute '" + name + "' states " +
-                                                          std::to_string(bytes) + " bytes, the file has " +
-                                                          std::to_string(size - at) + " after it");
-        }
-        in.seekg(std::streamoff(at + bytes));
-    }
-    return util::okStatus();
-}
-
 util::Result<util::ImageRGB> readExr(const std::string& path, int maxDimension) {
-    if (auto s = checkExrAttributeSizes(path); !s) return s.error();
+    // OpenEXR allocates what a file states before reading it (image_io_exr_check.h).
+    if (auto s = checkExrLayout(path, maxDimension); !s) return s.error();
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i dw = file.header().dataWindow();
@@ -233,7 +205,7 @@ util::Result<ExrAttributes> readExrAttributes(const std::string& path) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
             return makeError(ErrorKind::NotFound, path, "no such image file");
-        if (auto s = checkExrAttributeSizes(path); !s) return s.error();
+        if (auto s = checkExrHeaders(path, ImageLoadOptions{}.maxDimension); !s) return s.error();
         try {
             Imf::InputFile file(path.c_str());
             ExrAttributes attributes;

@@ -1,6 +1,7 @@
 #include "scene/mesh_loader.h"
 
 #include "scene/load_guard.h"
+#include "scene/mesh_loader_ply.h"
 #include "util/path_util.h"
 
 #include <assimp/BaseImporter.h>
@@ -50,101 +51,6 @@ std::vector<glm::vec3> smoothNormals(const TriangleMesh& m) {
         v = len > 0.0f ? v / len : glm::vec3(0.0f, 1.0f, 0.0f);
     }
     return n;
-}
-
-// Size in bytes of a PLY scalar type; 0 for names this check does not know (a lower bound).
-uint64_t plyTypeSize(const std::string& t) {
-    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
-    if (t == "double" || t == "float64") return 8;
-    return 0;
-}
-
-// Assimp 5.2's PLY reader (what Debian 12 ships) trusts the header it parses (fuzz_ply findings):
-// - without an "end_header" line it never returns (at the end of the file it re-reads its last
-//   line forever), and it only sees a line whole when it follows a '\n' (from any other line end it
-//   skips to the next '\n'), so "end_header" must start a '\n'-separated line;
-// - it loops once per element instance the header states, reading past the end of the file, and
-//   allocates for them: "element vertex 4000000000" in a 300-byte file hung or exhausted memory.
-// A file Assimp would read as PLY (a .ply, or one starting with "ply" in any case) is refused unless its
-// header ends with such a line and the instances it states fit in what follows: one line each
-// (ascii), or their properties' smallest encoding (binary; a list counts its length field only).
-util::Status checkPlyHeader(const std::string& path, const std::string& ext) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    const uint64_t size = uint64_t(in.tellg());
-    in.seekg(0);
-    char magic[3] = {};
-    in.read(magic, 3);
-    auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
-    // A .ply goes to Assimp's PLY reader whatever it starts with (it skips leading line ends: a
-    // file starting "\nply" without end_header hung it, fuzz_ply finding).
-    if (ext != ".ply" && (lower(magic[0]) != 'p' || lower(magic[1]) != 'l' || lower(magic[2]) != 'y'))
-        return util::okStatus();
-    in.clear();
-    in.seekg(0);
-    auto bad = [&](const std::string& what) { return makeError(ErrorKind::Format, path, "cannot read mesh: PLY " + what); };
-
-    struct Element {
-        uint64_t count = 0, minBytes = 0;
-    };
-    std::vector<Element> elements;
-    std::string format;
-    uint64_t headerBytes = 0;
-    bool ended = false;
-    for (std::string line; !ended && headerBytes < (1u << 20) && std::getline(in, line);) {
-        headerBytes += line.size() + 1;
-        line.resize(std::min(line.size(), line.find_first_of(std::string("\r\f\0", 3)))); // what Assimp sees
-        std::istringstream words(line);
-        std::string word;
-        words >> word;
-        if (line.rfind("end_header", 0) == 0 && (line.size() == 10 || line[10] == ' ' || line[10] == '\t')) {
-            ended = true;
-        } else if (word == "format" && format.empty()) { // Assimp takes the first
-            words >> format;
-        } else if (word == "element") {
-            std::string name;
-            long long count = 0;
-            words >> name >> count;
-            // Assimp reads the count where an unknown name starts with digits ("element 4444...4vertex 4":
-            // fuzz_ply finding), as a 32-bit value that wraps: that reading counts too.
-            uint32_t fromName = 0;
-            for (size_t i = 0; i < name.size() && name[i] >= '0' && name[i] <= '9'; ++i)
-                fromName = fromName * 10u + uint32_t(name[i] - '0');
-            elements.push_back({std::max<uint64_t>(uint64_t(std::max(0LL, count)), fromName), 0});
-        } else if (word == "property" && !elements.empty()) {
-            std::string type;
-            words >> type;
-            if (type == "list") words >> type; // the length field; the items may be none
-            elements.back().minBytes += plyTypeSize(type);
-        }
-    }
-    if (!ended) return bad("header has no 'end_header' line");
-    const uint64_t rest = size - std::min(size, headerBytes);
-    uint64_t instances = 0, minBytes = 0;
-    for (const Element& e : elements) {
-        instances += std::min<uint64_t>(e.count, uint64_t(1) << 40);
-        // At least a byte each: Assimp loops and allocates per instance even when the properties
-        // take no bytes it knows of (444444444 instances of an element without known properties
-        // took 8 GB: fuzz_ply finding).
-        minBytes += std::min<uint64_t>(e.count, uint64_t(1) << 40) * std::max<uint64_t>(1, e.minBytes);
-    }
-    if (format == "ascii") {
-        uint64_t lines = 0;
-        char last = '\n';
-        for (char c; in.get(c);) {
-            lines += c == '\n';
-            last = c;
-        }
-        lines += last != '\n';
-        if (instances > lines)
-            return bad("header states " + std::to_string(instances) + " element instances, but only " +
-                       std::to_string(lines) + " line(s) follow it");
-    } else if (format.rfind("binary", 0) == 0 && minBytes > rest) {
-        return bad("header states elements of at least " + std::to_string(minBytes) + " bytes, but only " +
-                   std::to_string(rest) + " follow it");
-    }
-    return util::okStatus();
 }
 
 // Assimp 5.2's glTF 2 reader allocates a GLB chunk's stated length before reading it: a 29-byte
@@ -286,7 +192,7 @@ namespace {
 util::Result<TriangleMesh> loadMeshUnguarded(const std::string& path, std::vector<std::string>* warnings) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return makeError(ErrorKind::NotFound, path, "no such mesh file");
-    if (auto s = checkPlyHeader(path, util::lowerExtension(path)); !s) return s.error();
+    if (auto s = checkPlyFile(path, util::lowerExtension(path)); !s) return s.error();
     if (auto s = checkGlbChunks(path); !s) return s.error();
     if (auto s = checkGltfPrimitives(path, util::lowerExtension(path)); !s) return s.error();
     Assimp::Importer importer;

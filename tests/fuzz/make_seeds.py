@@ -4,7 +4,8 @@ fuzzers start from inputs that load and mutate them; the bundled resources and t
 are added to the seeds at configure time). The EXR seeds (corpus/fuzz_exr/rgba_<compression>.exr,
 tiled_mip.exr, y_float_window.exr: 8x4 images, one per OpenEXR compression, a tiled mipmapped one
 and a luminance-only one with an offset data window) were written once with OpenEXR's
-RgbaOutputFile / TiledRgbaOutputFile / OutputFile. Usage: python3 make_seeds.py"""
+RgbaOutputFile / TiledRgbaOutputFile / OutputFile, and multipart_scanline_tiled.exr (8x4, a ZIP
+scanline part and a PIZ mipmapped tiled part, float RGB 0.25/0.5/1) with MultiPartOutputFile. Usage: python3 make_seeds.py"""
 import base64
 import json
 import os
