@@ -326,7 +326,19 @@ util::Status checkPlyFile(const std::string& path, const std::string& ext) {
         for (const PlyProperty& p : e.properties)
             if (p.type == PlyType::Unknown || (p.list && p.lengthType == PlyType::Unknown))
                 return bad("property '" + p.name + "' of element '" + e.name + "' has an unknown type '" + p.typeName + "'");
-    return ascii ? walkAscii(path, bytes, h) : walkBinary(path, in, size, h);
+    if (ascii) return walkAscii(path, bytes, h);
+    if (auto s = walkBinary(path, in, size, h); !s) return s;
+    // Empty lines right after end_header's line: Assimp 5.2 skips them before its binary data (an
+    // empty line there hid a 27 GB list from the walk above: fuzz_ply finding), so the data after
+    // them must hold what the header states too. Only '\n' and '\r': a first value whose low byte
+    // is 0 (a float 0.0) is common, and no finding says Assimp skips it.
+    PlyHeader skipped = h;
+    auto lineEnd = [&](uint64_t i) { return i < bytes.size() && (bytes[i] == '\n' || bytes[i] == '\r'); };
+    while (lineEnd(skipped.bytes)) {
+        const size_t newline = bytes.find('\n', size_t(skipped.bytes));
+        skipped.bytes = newline == std::string::npos ? size : newline + 1;
+    }
+    return skipped.bytes == h.bytes ? util::okStatus() : walkBinary(path, in, size, skipped);
 }
 
 } // namespace wavelit::scene
