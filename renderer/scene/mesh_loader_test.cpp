@@ -208,6 +208,14 @@ TEST_F(MeshLoader, PlyListsStatingMoreItemsThanTheFileHoldsAreRefused) {
     ASSERT_FALSE(emptyLine.ok());
     EXPECT_NE(emptyLine.error().message().find("states a list of 1073741824 items"), std::string::npos)
         << emptyLine.error().message();
+    // Ascii: Assimp skips empty lines, so they do not count as instance lines (an empty line let a
+    // vertex line short of values pull the face line's 10^9-item list into Assimp: fuzz_ply finding).
+    const std::string asciiHead = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                  "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+    auto asciiEmpty = loadMesh(write("ascii_empty.ply", asciiHead + "0\n0 0 0\n\n1000000000 0 1 2\n"));
+    ASSERT_FALSE(asciiEmpty.ok());
+    EXPECT_NE(asciiEmpty.error().message().find("states 4 element instances, but only 3 line(s) follow"), std::string::npos)
+        << asciiEmpty.error().message();
     // A negative signed length is a huge unsigned one to Assimp.
     std::string charHead = head;
     charHead.replace(charHead.find("list uint"), 9, "list char");
