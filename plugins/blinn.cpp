@@ -11,6 +11,7 @@
 // invalid samples. GLSL twin: blinn.glsl.
 #include "plugins/brdf.h"
 #include "plugins/cosine_power.h"
+#include "plugins/half_vector_sample.h"
 
 #include "util/hemisphere_sampling.h"
 
@@ -62,20 +63,12 @@ public:
     }
 
     BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
-        BrdfSample s;
-        if (wo.z <= 0.0f) return s;
+        if (wo.z <= 0.0f) return {};
         const float x = sampleOneMinusCos(u1, exponentOf(p.roughness) + 2.0f);
         const float sinT = std::sqrt(std::max(0.0f, x * (2.0f - x)));
         const float phi = 2.0f * util::kPi * u2;
         const glm::vec3 h(sinT * std::cos(phi), sinT * std::sin(phi), 1.0f - x);
-        const float woh = glm::dot(wo, h);
-        if (woh <= 0.0f) return s; // a facet seen from behind reflects nothing
-        s.wi = glm::normalize(2.0f * woh * h - wo);
-        if (s.wi.z <= 0.0f) return s; // below the horizon: the path ends
-        s.pdf = pdf(p, wo, s.wi);
-        s.f = eval(p, wo, s.wi);
-        s.valid = s.pdf > 0.0f;
-        return s;
+        return reflectAboutHalfVector(*this, p, wo, h);
     }
 
     float pdf(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {

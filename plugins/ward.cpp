@@ -13,6 +13,7 @@
 // compute the same lobe. GLSL twin: ward.glsl.
 #include "plugins/brdf.h"
 #include "plugins/cosine_power.h"
+#include "plugins/half_vector_sample.h"
 
 #include "util/hemisphere_sampling.h"
 
@@ -78,8 +79,7 @@ public:
     }
 
     BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
-        BrdfSample s;
-        if (wo.z <= 0.0f) return s;
+        if (wo.z <= 0.0f) return {};
         const Alphas a = alphasOf(p);
         // Walter's eq. 7, φh = atan(αy/αx tan 2πu2) in the quadrant of 2πu2, taken as the
         // direction of (αx cos 2πu2, αy sin 2πu2): no atan, whose Mesa GLSL form is a short
@@ -92,14 +92,7 @@ public:
         const float cosT = 1.0f / std::sqrt(1.0f + tan2);
         const float sinT = std::sqrt(tan2) * cosT;
         const glm::vec3 h(sinT * c, sinT * sn, cosT);
-        const float woh = glm::dot(wo, h);
-        if (woh <= 0.0f) return s; // a facet seen from behind reflects nothing
-        s.wi = glm::normalize(2.0f * woh * h - wo);
-        if (s.wi.z <= 0.0f) return s; // below the horizon: the path ends
-        s.pdf = pdf(p, wo, s.wi);
-        s.f = eval(p, wo, s.wi);
-        s.valid = s.pdf > 0.0f;
-        return s;
+        return reflectAboutHalfVector(*this, p, wo, h);
     }
 
     float pdf(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
