@@ -1,0 +1,27 @@
+# Runs one scripted UI test (tests/ui/CMakeLists.txt): copies resources/ into OUT_DIR, starts
+# `wavelit [SCENE] --script SCRIPT [ARGS]` and fails unless it exits 0. Arguments: WAVELIT, SCRIPT,
+# RESOURCES, OUT_DIR.
+file(REMOVE_RECURSE ${OUT_DIR})
+file(MAKE_DIRECTORY ${OUT_DIR})
+file(COPY ${RESOURCES}/ DESTINATION ${OUT_DIR}/resources)
+file(STRINGS ${SCRIPT} args_line LIMIT_COUNT 1 REGEX "^// wavelit-args:")
+file(STRINGS ${SCRIPT} scene_line LIMIT_COUNT 1 REGEX "^// wavelit-scene:")
+set(args "")
+if(args_line)
+    string(REGEX REPLACE "^// wavelit-args:[ ]*" "" args "${args_line}")
+    separate_arguments(args UNIX_COMMAND "${args}")
+endif()
+set(scene "")
+if(scene_line)
+    string(REGEX REPLACE "^// wavelit-scene:[ ]*" "" scene "${scene_line}")
+    string(STRIP "${scene}" scene)
+    set(scene ${OUT_DIR}/resources/${scene})
+endif()
+set(ENV{WAVELIT_SCRIPT_OUT} ${OUT_DIR})
+set(ENV{WAVELIT_UI_RESOURCES} ${OUT_DIR}/resources)
+execute_process(COMMAND ${WAVELIT} ${scene} --script ${SCRIPT} ${args}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 360)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "wavelit --script ${SCRIPT} exited with '${rc}'")
+endif()
