@@ -31,35 +31,38 @@ int sidesFor(double omega, const TexelDirections& dirs) {
     return std::clamp(int(std::ceil(std::sqrt(texels))), 1, kMaxSide);
 }
 
+// Collects the samples' (texel, weight, distance) into `out`, merged per texel: at most
+// kMaxSide^2 samples, so a sorted insertion into the caller's buffer beats a sort and keeps a
+// light edit free of allocations (it runs once per point per edit).
 class Accumulator {
 public:
-    explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) { m_entries.reserve(kMaxSide * kMaxSide); }
-    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
-        m_entries.push_back({m_dirs.texelOf(dir), weight, distance});
+    Accumulator(const TexelDirections& dirs, std::vector<TexelWeight>& out) : m_dirs(dirs), m_out(out) {
+        m_out.clear();
+        m_out.reserve(kMaxSide * kMaxSide);
     }
-    std::vector<TexelWeight> finish() {
-        std::sort(m_entries.begin(), m_entries.end(),
-                  [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
-        std::vector<TexelWeight> out;
-        std::vector<int> counts;
-        for (const TexelWeight& e : m_entries) {
-            if (!out.empty() && out.back().texel == e.texel) {
-                out.back().weight += e.weight;
-                out.back().distance += e.distance;
-                ++counts.back();
-            } else {
-                out.push_back(e);
-                counts.push_back(1);
-            }
+    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
+        const uint32_t texel = m_dirs.texelOf(dir);
+        size_t i = m_out.size();
+        while (i > 0 && m_out[i - 1].texel > texel) --i;
+        if (i > 0 && m_out[i - 1].texel == texel) {
+            m_out[i - 1].weight += weight;
+            m_out[i - 1].distance += distance;
+            ++m_counts[i - 1];
+            return;
         }
-        for (size_t i = 0; i < out.size(); ++i) out[i].distance /= float(counts[i]);
-        std::erase_if(out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
-        return out;
+        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance});
+        for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
+        m_counts[i] = 1;
+    }
+    void finish() {
+        for (size_t i = 0; i < m_out.size(); ++i) m_out[i].distance /= float(m_counts[i]);
+        std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
     }
 
 private:
     const TexelDirections& m_dirs;
-    std::vector<TexelWeight> m_entries;
+    std::vector<TexelWeight>& m_out;
+    int m_counts[kMaxSide * kMaxSide] = {};
 };
 
 // Uniform radiance `radiance` over the cone of half angle with 1 - cos = oneMinusCos about axis.
@@ -133,7 +136,14 @@ glm::vec3 lightPower(const scene::Light& light) { return light.color * light.int
 
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs) {
-    Accumulator acc(dirs);
+    std::vector<TexelWeight> out;
+    projectLight(light, p, dirs, out);
+    return out;
+}
+
+void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                  std::vector<TexelWeight>& out) {
+    Accumulator acc(dirs, out);
     const glm::vec3 power = light.color * light.intensity;
     const glm::vec3 toLight = light.position - p;
     const float d2 = glm::dot(toLight, toLight);
@@ -173,7 +183,7 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         break;
     }
     }
-    return acc.finish();
+    acc.finish();
 }
 
 } // namespace wavelit::relight

@@ -37,5 +37,8 @@ glm::vec3 lightPower(const scene::Light& light); // colour x intensity
 // Sorted by texel, one entry per texel, no zero weights. p is the visibility rays' origin.
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs);
+// The same into `out` (cleared first), which keeps its capacity between calls.
+void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                  std::vector<TexelWeight>& out);
 
 } // namespace wavelit::relight

@@ -105,7 +105,9 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
     const glm::vec3 wo = frame.toLocal(p.wo);
     const glm::vec3 origin = rayOrigin(p);
     glm::vec3 sum(0.0f), sum0(0.0f);
-    for (const TexelWeight& e : projectLight(unitPowerLight(light), origin, *ctx.dirs)) {
+    thread_local std::vector<TexelWeight> entries;
+    projectLight(unitPowerLight(light), origin, *ctx.dirs, entries);
+    for (const TexelWeight& e : entries) {
         if (!testBit(s.above, e.texel)) continue;
         bool seen = visible(s, e.texel);
         if (!seen && std::isfinite(e.distance))
