@@ -12,11 +12,13 @@
 // than half a 32² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
 // (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles);
 // --coarse-level N: also the coarse-to-fine first answer (relight/coarse_to_fine.h) from a preview
-// on the 2^N grid, applied before the full one: DIR/edit_<i>_coarse.exr and per edit coarseMs,
-// coarseImageMs (and coarseRelRMSE with a reference).
+// on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the
+// full one: DIR/edit_<i>_coarse.exr and per edit coarseMs, coarseImageMs (and coarseRelRMSE
+// with a reference).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "relight/coarse_to_fine.h"
 #include "relight/edit_list.h"
 #include "relight/relight_preview.h"
 #include "relight/sphere_level.h"
@@ -77,7 +79,7 @@ double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
 
 int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
-                                   "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level"},
+                                   "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride"},
                             {"--skip-full-rebuild"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
@@ -93,7 +95,8 @@ int runRelight(const std::vector<std::string>& argv) {
     auto threads = args->intValue("--threads", 2, 1, 256);
     auto previewWidth = args->intValue("--preview", kDefaultPreviewWidth, 1, 4096);
     auto coarseLevel = args->intValue("--coarse-level", 0, 1, 7); // 0: no coarse answer
-    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth, &coarseLevel})
+    auto coarseStride = args->intValue("--coarse-stride", 1, 1, 16);
+    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth, &coarseLevel, &coarseStride})
         if (!*r) return reportError(r->error());
 
     const std::string scenePath = args->positional()[0];
@@ -130,11 +133,10 @@ int runRelight(const std::vector<std::string>& argv) {
     const double buildMs = buildTimer.milliseconds();
     // The coarse-to-fine first answer: the same preview on a coarser grid, edited first.
     std::unique_ptr<relight::RelightPreview> coarse;
-    relight::RelightSettings coarseSettings = settings;
+    const relight::RelightSettings coarseSettings =
+        relight::CoarseToFinePreview::coarseSettings(settings, *coarseLevel, *coarseStride);
     double coarseBuildMs = 0.0;
     if (*coarseLevel > 0) {
-        coarseSettings.level = *coarseLevel;
-        coarseSettings.keep = std::min(settings.keep, size_t(1) << (2 * *coarseLevel));
         util::Timer coarseTimer;
         auto built = relight::RelightPreview::create(scene, coarseSettings);
         if (!built) return reportError(built.error());
@@ -151,6 +153,7 @@ int runRelight(const std::vector<std::string>& argv) {
                          {"bytesPerPoint", (*preview)->hitCount() ? double((*preview)->stateBytes()) / double((*preview)->hitCount()) : 0.0}};
     if (coarse)
         report["coarse"] = {{"sphereSide", 1 << coarseSettings.level}, {"keep", coarseSettings.keep},
+                            {"width", coarseSettings.width}, {"height", coarseSettings.height},
                             {"buildMs", coarseBuildMs},
                             {"bytesPerPoint", coarse->hitCount() ? double(coarse->stateBytes()) / double(coarse->hitCount()) : 0.0}};
     report["reference"] = *refSpp > 0 ? nlohmann::ordered_json{{"device", "cpu"}, {"sampler", "mis"}, {"bounces", 1}, {"spp", *refSpp}}

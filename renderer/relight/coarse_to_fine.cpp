@@ -4,15 +4,23 @@
 
 namespace wavelit::relight {
 
+RelightSettings CoarseToFinePreview::coarseSettings(const RelightSettings& settings, int coarseLevel,
+                                                   int pointStride) {
+    RelightSettings coarse = settings;
+    coarse.level = coarseLevel < 0 ? std::max(1, settings.level - 2) : coarseLevel;
+    coarse.keep = std::min(settings.keep, size_t(1) << (2 * std::clamp(coarse.level, 1, 7)));
+    const int stride = std::max(1, pointStride);
+    coarse.width = (settings.width + stride - 1) / stride;
+    coarse.height = (settings.height + stride - 1) / stride;
+    return coarse;
+}
+
 util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(const scene::Scene& scene,
                                                                                const RelightSettings& settings,
-                                                                               int coarseLevel) {
+                                                                               int coarseLevel, int pointStride) {
     auto fine = RelightPreview::create(scene, settings);
     if (!fine) return fine.error();
-    RelightSettings coarseSettings = settings;
-    coarseSettings.level = coarseLevel < 0 ? std::max(1, settings.level - 2) : coarseLevel;
-    coarseSettings.keep = std::min(settings.keep, size_t(1) << (2 * std::clamp(coarseSettings.level, 1, 7)));
-    auto coarse = RelightPreview::create(scene, coarseSettings);
+    auto coarse = RelightPreview::create(scene, coarseSettings(settings, coarseLevel, pointStride));
     if (!coarse) return coarse.error();
     std::unique_ptr<CoarseToFinePreview> out(new CoarseToFinePreview());
     out->m_fine = std::move(fine).value();

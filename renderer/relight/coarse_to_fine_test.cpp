@@ -26,9 +26,11 @@ TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScra
     using K = scene::EntityKind;
     scene::Scene scene = testing::makeRelightScene();
     const RelightSettings settings = testing::smallSettings();
-    auto preview = CoarseToFinePreview::create(scene, settings);
+    auto preview = CoarseToFinePreview::create(scene, settings, -1, 2);
     ASSERT_TRUE(preview);
-    EXPECT_EQ((*preview)->coarse().settings().level, settings.level - 2);
+    const RelightSettings coarseSettings = (*preview)->coarse().settings();
+    EXPECT_EQ(coarseSettings.level, settings.level - 2);
+    EXPECT_EQ(coarseSettings.width, settings.width / 2);
     const int w = settings.width, h = settings.height;
     const std::vector<std::tuple<scene::EntityRef, const char*, scene::PropertyValue>> frames = {
         {{K::Object, 4}, "translation", glm::vec3(0.2f, 0.5f, 0.0f)},
@@ -41,11 +43,9 @@ TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScra
         ASSERT_TRUE(changes.apply(scene));
         (*preview)->applyCoarse(scene, changes);
         EXPECT_TRUE((*preview)->finePending());
-        RelightSettings coarseSettings = settings;
-        coarseSettings.level = settings.level - 2;
         auto coarseScratch = RelightPreview::create(scene, coarseSettings);
         ASSERT_TRUE(coarseScratch);
-        EXPECT_LE(maxRelativeDifference((*preview)->image(w, h), (*coarseScratch)->image()), 1e-6);
+        EXPECT_LE(maxRelativeDifference((*preview)->image(w, h), (*coarseScratch)->image(w, h)), 1e-6);
     }
     const EditSummary fine = (*preview)->applyFine();
     EXPECT_EQ(fine.kind, "object"); // the merged set holds the object move
