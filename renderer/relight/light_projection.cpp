@@ -44,18 +44,25 @@ public:
         const uint32_t texel = m_dirs.texelOf(dir);
         size_t i = m_out.size();
         while (i > 0 && m_out[i - 1].texel > texel) --i;
+        const glm::vec3 unit = glm::normalize(dir);
+        const float w = weight.x + weight.y + weight.z;
         if (i > 0 && m_out[i - 1].texel == texel) {
             m_out[i - 1].weight += weight;
             m_out[i - 1].distance += distance;
+            m_out[i - 1].direction += unit * w;
             ++m_counts[i - 1];
             return;
         }
-        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance});
+        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, unit * w});
         for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
         m_counts[i] = 1;
     }
     void finish() {
-        for (size_t i = 0; i < m_out.size(); ++i) m_out[i].distance /= float(m_counts[i]);
+        for (size_t i = 0; i < m_out.size(); ++i) {
+            m_out[i].distance /= float(m_counts[i]);
+            const float len = glm::length(m_out[i].direction);
+            m_out[i].direction = len > 0.0f ? m_out[i].direction / len : m_dirs.direction(m_out[i].texel);
+        }
         std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
     }
 
