@@ -57,6 +57,8 @@ public:
         for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
         m_counts[i] = 1;
     }
+    // The light is smaller than a quarter texel: one sample carries it all.
+    void markCompact() { m_compact = true; }
     void finish() {
         for (size_t i = 0; i < m_out.size(); ++i) {
             m_out[i].distance /= float(m_counts[i]);
@@ -64,12 +66,14 @@ public:
             m_out[i].direction = len > 0.0f ? m_out[i].direction / len : m_dirs.direction(m_out[i].texel);
         }
         std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
+        for (TexelWeight& e : m_out) e.compact = m_compact;
     }
 
 private:
     const TexelDirections& m_dirs;
     std::vector<TexelWeight>& m_out;
     int m_counts[kMaxSide * kMaxSide] = {};
+    bool m_compact = false;
 };
 
 // Uniform radiance `radiance` over the cone of half angle with 1 - cos = oneMinusCos about axis.
@@ -77,7 +81,10 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
              double oneMinusCos, const glm::vec3& radiance, float distance) {
     const double omega = 2.0 * kPi * oneMinusCos;
     const glm::vec3 total = radiance * float(omega);
-    if (omega < 0.25 * dirs.texelSolidAngle()) return acc.add(axis, total, distance);
+    if (omega < 0.25 * dirs.texelSolidAngle()) {
+        acc.markCompact();
+        return acc.add(axis, total, distance);
+    }
     const int s = sidesFor(omega, dirs);
     const Basis basis = basisAround(axis);
     const glm::vec3 each = total / float(s * s);
@@ -107,6 +114,7 @@ void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& 
     if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
     const double omega = double(area) * glm::dot(toP, n) / std::sqrt(d2) / d2;
     const int s = omega < 0.25 * dirs.texelSolidAngle() ? 1 : sidesFor(omega, dirs);
+    if (s == 1 && omega < 0.25 * dirs.texelSolidAngle()) acc.markCompact();
     for (int j = 0; j < s; ++j)
         for (int i = 0; i < s; ++i) {
             const float a = ((i + 0.5f) / s - 0.5f) * light.size.x;
@@ -172,6 +180,7 @@ void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDire
         if (!(d2 > 0.0f)) break;
         const glm::vec3 dir = toLight / std::sqrt(d2);
         const float falloff = light.type == scene::LightType::Spot ? spotFalloff(light, -dir) : 1.0f;
+        acc.markCompact();
         acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
         break;
     }
@@ -182,6 +191,7 @@ void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDire
         const glm::vec3 axis = -light.direction / len;
         const double half = 0.5 * double(light.angularDiameterDeg) * kPi / 180.0;
         if (half <= 0.0) {
+            acc.markCompact();
             acc.add(axis, power, kInfinity);
             break;
         }

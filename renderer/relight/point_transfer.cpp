@@ -114,11 +114,12 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
             seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
                                     e.distance * (1.0f - 1e-3f));
         if (!seen) continue;
-        // A narrow lobe near its mirror direction is evaluated where the light is, not averaged
-        // over the texel: a sun a tenth of a texel wide reflected in chrome is one sharp highlight
-        // (the texel average would spread its energy over the texel's whole solid angle).
+        // A narrow lobe near its mirror direction sees a light smaller than a texel where the
+        // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
+        // is one sharp highlight (the average would spread it over the texel's solid angle). A
+        // light that fills texels keeps the texel average, which covers what it fills.
         const glm::vec3 local = frame.toLocal(e.direction);
-        if (m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
+        if (e.compact && m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
             if (local.z > 0.0f) {
                 sum += m.brdf->eval(m.params, wo, local) * local.z * e.weight;
                 if (black) sum0 += m.brdf->eval(m.black, wo, local) * local.z * e.weight;
