@@ -161,6 +161,11 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
 
     summary.sharedMs = timer.milliseconds();
     timer.restart();
+    // Power, colour and emission edits leave nothing per point: skip the pass over the points.
+    if (!recast && !environment && lights.empty() && materials.empty() && objects.empty()) {
+        summary.pointsMs = timer.milliseconds();
+        return summary;
+    }
     const TransferContext ctx = context();
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     std::vector<uint8_t> touched(m_points.size(), 0);
