@@ -145,6 +145,7 @@ FileActions::FileActions(MainWindow* window)
 QString FileActions::finish(const QString& title, const QString& error) {
     if (!error.isEmpty()) {
         m_lastError = error;
+        ++m_failures;
         m_window->errors()->report(title, error);
     }
     return error;

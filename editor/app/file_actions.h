@@ -54,6 +54,7 @@ public:
     // Drops whose file operation has not reported yet (scripts wait for 0).
     int pendingDrops() const { return m_pendingDrops; }
     QString lastError() const { return m_lastError; }
+    int failures() const { return m_failures; } // how many operations failed so far
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override; // the window's drops
@@ -71,6 +72,7 @@ private:
     Done m_renderDone;
     QString m_lastError;
     int m_pendingDrops = 0;
+    int m_failures = 0;
 };
 
 } // namespace wavelit::editor

@@ -8,6 +8,7 @@
 
 #include "panels/entity_ref.h"
 
+#include "scene/change_set.h"
 #include "util/result.h"
 
 #include <QObject>

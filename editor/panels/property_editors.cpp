@@ -35,7 +35,7 @@ double spinMin(const scene::PropertyInfo& info) { return std::max(info.min, -kSp
 double spinMax(const scene::PropertyInfo& info) { return std::min(info.max, kSpinLimit); }
 
 QDoubleSpinBox* makeSpin(const scene::PropertyInfo& info, QWidget* parent, const EditorContext& context) {
-    auto* spin = new QDoubleSpinBox(parent);
+    auto* spin = new TypedDoubleSpinBox(parent);
     guardRange(spin, info, context.refuse);
     spin->setRange(spinMin(info), spinMax(info));
     spin->setDecimals(kDecimals);
@@ -118,7 +118,7 @@ PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, 
 
 PropertyEditor intEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent,
                          const EditorContext& context) {
-    auto* spin = new QSpinBox(parent);
+    auto* spin = new TypedSpinBox(parent);
     guardRange(spin, info, context.refuse);
     spin->setRange(int(std::max(info.min, -kSpinLimit)), int(std::min(info.max, kSpinLimit)));
     spin->setKeyboardTracking(false);

@@ -3,8 +3,9 @@
 #include <QAbstractSpinBox>
 #include <QEvent>
 #include <QKeyEvent>
-#include <QSpinBox>
 #include <QLocale>
+
+#include <optional>
 
 namespace wavelit::editor {
 namespace {
@@ -13,6 +14,17 @@ QString number(double v) {
     if (v <= -1e29) return QStringLiteral("-∞");
     if (v >= 1e29) return QStringLiteral("∞");
     return QString::number(v, 'g', 6);
+}
+
+// The number a spin box's text shows, without its prefix and suffix ("0.5 m", "× 2").
+std::optional<double> typedNumber(QString text, const QString& prefix, const QString& suffix) {
+    if (!prefix.isEmpty() && text.startsWith(prefix)) text.remove(0, prefix.size());
+    if (!suffix.isEmpty() && text.endsWith(suffix)) text.chop(suffix.size());
+    text = text.trimmed();
+    bool ok = false;
+    double value = QLocale().toDouble(text, &ok);
+    if (!ok) value = text.toDouble(&ok);
+    return ok ? std::optional<double>(value) : std::nullopt;
 }
 
 class RangeGuard : public QObject {
@@ -33,18 +45,12 @@ protected:
 
 private:
     void check() {
-        // The text without the prefix and suffix the spin box shows ("0.5 m", "× 2").
-        QString text = m_spin->text(), prefix, suffix;
+        QString prefix, suffix;
         if (auto* d = qobject_cast<QDoubleSpinBox*>(m_spin)) prefix = d->prefix(), suffix = d->suffix();
         if (auto* i = qobject_cast<QSpinBox*>(m_spin)) prefix = i->prefix(), suffix = i->suffix();
-        if (!prefix.isEmpty() && text.startsWith(prefix)) text.remove(0, prefix.size());
-        if (!suffix.isEmpty() && text.endsWith(suffix)) text.chop(suffix.size());
-        text = text.trimmed();
-        bool ok = false;
-        double value = QLocale().toDouble(text, &ok);
-        if (!ok) value = text.toDouble(&ok);
-        if (!ok) return;
-        if (const QString message = rangeRefusal(m_info, value); !message.isEmpty() && m_refuse) m_refuse(message);
+        const auto value = typedNumber(m_spin->text(), prefix, suffix);
+        if (!value) return;
+        if (const QString message = rangeRefusal(m_info, *value); !message.isEmpty() && m_refuse) m_refuse(message);
     }
 
     QAbstractSpinBox* m_spin;
@@ -53,6 +59,19 @@ private:
 };
 
 } // namespace
+
+// A number out of range is Intermediate (typing goes on; Enter reverts it after the guard spoke).
+QValidator::State TypedDoubleSpinBox::validate(QString& text, int& pos) const {
+    const QValidator::State state = QDoubleSpinBox::validate(text, pos);
+    if (state == QValidator::Invalid && typedNumber(text, prefix(), suffix())) return QValidator::Intermediate;
+    return state;
+}
+
+QValidator::State TypedSpinBox::validate(QString& text, int& pos) const {
+    const QValidator::State state = QSpinBox::validate(text, pos);
+    if (state == QValidator::Invalid && typedNumber(text, prefix(), suffix())) return QValidator::Intermediate;
+    return state;
+}
 
 QString rangeRefusal(const scene::PropertyInfo& info, double value) {
     if (value >= info.min && value <= info.max) return {};

@@ -9,6 +9,7 @@
 #include "app/recent_files.h"
 #include "app/scene_document.h"
 #include "panels/entity_ref.h"
+#include "panels/outline_panel.h"
 #include "panels/render_status_label.h"
 
 #include "scene/image_io.h"
@@ -20,6 +21,7 @@
 #include <QDropEvent>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QImage>
 #include <QJSEngine>
 #include <QMimeData>
 #include <QTimer>
@@ -144,13 +146,13 @@ bool AppApi::dropFile(const QString& path) {
         delete mime;
         return fail(QStringLiteral("dropFile: the window does not take '%1'").arg(path));
     }
-    const QString before = m_window->files()->lastError();
+    const int failuresBefore = m_window->files()->failures();
     QDropEvent drop(QPointF(centre), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(m_window, &drop);
     delete mime;
     SceneDocument* document = m_window->document();
     spinUntil([&] { return m_window->files()->pendingDrops() == 0 && !document->isLoading(); });
-    return m_window->files()->lastError() == before || m_window->files()->lastError().isEmpty();
+    return m_window->files()->failures() == failuresBefore;
 }
 
 bool AppApi::renderToFile(const QString& path, const QJSValue& budget) {
@@ -169,6 +171,15 @@ QString AppApi::statusText() const { return m_window->statusLabel()->text(); }
 double AppApi::noiseEstimate() const { return m_window->statusLabel()->noise().value_or(-1.0); }
 
 QJSValue AppApi::imageInfo(const QString& path) {
+    if (QFileInfo(path).suffix().toLower() == "png") { // display output: 8-bit, read by Qt
+        const QImage png(path);
+        if (png.isNull()) return fail(QStringLiteral("imageInfo: '%1' is not a readable PNG").arg(path)), QJSValue();
+        QJSValue out = m_engine->newObject();
+        out.setProperty("width", png.width());
+        out.setProperty("height", png.height());
+        out.setProperty("finite", true);
+        return out;
+    }
     // Unsanitised: a NaN or Inf texel is an error of loadImage, reported here as finite = false.
     scene::ImageLoadOptions strict;
     strict.sanitize = false;

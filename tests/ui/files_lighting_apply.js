@@ -1,12 +1,14 @@
 // wavelit-args: --size 48x48 --sampler bsdf --max-spp 8
 // wavelit-scene: scenes/glossy_sphere.wlscene
 // A lighting setup saved from one scene and applied onto another renders like a scene that holds
-// the same setup inline: same image within noise (the same seed, so in fact the same samples).
+// the same setup inline. Both renders use the same seed, so they draw the same samples: the
+// images agree to float rounding (relative RMS < 1e-4), far inside the noise the status line
+// estimates (printed), while the scene before the setup was applied differs by far more.
 //   1. glossy_sphere (sun_sky by reference): edit the sun and the environment, save the setup
 //      (app.saveLighting) and, as the reference, the scene with that lighting inline.
 //   2. another scene — glossy_sphere lit by studio_soft, saved and reopened — renders a while,
 //      then gets the saved setup with app.applyLighting (an edit of a running session).
-//   3. its image against the inline reference's: relative RMS difference below 3 x the noise.
+//   3. its image against the inline reference's.
 function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var res = app.environment("WAVELIT_UI_RESOURCES");
 var out = app.environment("WAVELIT_SCRIPT_OUT");
@@ -44,12 +46,12 @@ var refNoise = app.noiseEstimate();
 
 var same = app.compareImages(out + "/applied.exr", out + "/reference.exr");
 var before = app.compareImages(out + "/other_before.exr", out + "/reference.exr");
-var tolerance = 3 * Math.max(noise, refNoise, 0.005);
+var tolerance = 1e-4; // the same samples; the noise estimate is printed for scale
 console.log("applied vs inline: relative RMS " + same.relativeRms.toFixed(5) + " (means " + same.meanA.toFixed(4) +
             ", " + same.meanB.toFixed(4) + "); noise estimate " + noise.toFixed(4) + " / " + refNoise.toFixed(4) +
             "; tolerance " + tolerance.toFixed(4) + "; studio_soft vs inline: " + before.relativeRms.toFixed(4));
 check(same.relativeRms < tolerance, "the applied setup renders differently from the inline one");
-check(before.relativeRms > 3 * tolerance, "the test cannot tell lighting setups apart");
+check(before.relativeRms > Math.max(noise, 0.05), "the test cannot tell lighting setups apart");
 
 // Undo puts the studio lighting back.
 app.openScene(out + "/other.wlscene");
