@@ -9,6 +9,11 @@ var out = app.environment("WAVELIT_SCRIPT_OUT");
 app.waitForSamples(8, 300);
 app.saveImage(out + "/viewport.exr");
 var noise = app.noiseEstimate();
+var status = app.statusText();
+console.log("status: " + status);
+["8 spp", " s ·", "Msamples/s", "bsdf", "noise ≈"].forEach(function (part) {
+    check(status.indexOf(part) >= 0, "the status line lacks '" + part + "': " + status);
+});
 
 check(app.renderToFile(out + "/render.exr", {spp: 8}), "renderToFile exr: " + app.lastError());
 var info = app.imageInfo(out + "/render.exr");
