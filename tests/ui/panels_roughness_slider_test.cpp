@@ -1,6 +1,6 @@
 // The property panel with real input (issue 14): a mouse drag on the roughness slider of the
 // ring's material changes the scene's roughness to the value under the handle, as ONE undo step,
-// and the viewport's image changes beyond noise; a roughness typed outside [0, 1] is refused with
+// and the viewport's image changes (an unchanged scene would render the same samples to the same image); a roughness typed outside [0, 1] is refused with
 // a visible message and the value stays; the BRDF is a combo box of the plugin registry's names;
 // a colour is a swatch (an HDR colour with an intensity beside it); a path has a file button.
 #include "app/main_window.h"
@@ -20,6 +20,8 @@
 #include <QStyleOptionSlider>
 #include <QUndoStack>
 #include <QtTest>
+
+#include <glm/vec3.hpp>
 
 #include <cmath>
 
@@ -106,6 +108,16 @@ void PanelsRoughnessSliderTest::sliderDragChangesRoughnessAndImage() {
     QVERIFY(!base->findChild<QDoubleSpinBox*>("intensity")); // [0, 1]: no intensity
     QWidget* emission = window.properties()->editorFor("emission");
     QVERIFY(emission && emission->findChild<QDoubleSpinBox*>("intensity")); // HDR
+    // The intensity beside an HDR swatch scales the colour: a black emission becomes white x 2.5
+    // (typed and committed with Enter: one edit), and undo puts the black back.
+    auto* strength = emission->findChild<QDoubleSpinBox*>("intensity");
+    strength->setFocus();
+    strength->selectAll();
+    QTest::keyClicks(strength, "2.5");
+    QTest::keyClick(strength, Qt::Key_Return);
+    QCOMPARE(window.document()->scene()->materials.front().emission, glm::vec3(2.5f));
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->scene()->materials.front().emission, glm::vec3(0.0f));
     QWidget* file = window.properties()->editorFor("brdfFile");
     if (file) QVERIFY(file->findChild<QPushButton*>("browse"));
 
@@ -118,7 +130,7 @@ void PanelsRoughnessSliderTest::sliderDragChangesRoughnessAndImage() {
     QCOMPARE(spin->suffix(), QString()); // roughness has no unit; the range is the registry's
     QCOMPARE(spin->minimum(), 0.0);
     QCOMPARE(spin->maximum(), 1.0);
-    const int stepsBefore = window.document()->undoStack()->count();
+    const int stepsBefore = window.document()->undoStack()->index();
     const QPoint from = handleCentre(slider);
     const QPoint to(int(slider->width() * 0.75), from.y());
     QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, from);
@@ -129,7 +141,7 @@ void PanelsRoughnessSliderTest::sliderDragChangesRoughnessAndImage() {
     qInfo("roughness after the drag: %.3f (slider %d of %d)", double(dragged), slider->value(), slider->maximum());
     QVERIFY2(dragged > 0.55f && dragged < 0.95f, "the drag did not move the roughness to the handle");
     QVERIFY(std::abs(double(dragged) - spin->value()) < 1e-6);
-    QCOMPARE(window.document()->undoStack()->count(), stepsBefore + 1); // one drag, one step
+    QCOMPARE(window.document()->undoStack()->index(), stepsBefore + 1); // one drag, one step
 
     const auto after = waitForImage(window);
     QVERIFY(after);
