@@ -107,8 +107,15 @@ FileActions::FileActions(MainWindow* window)
         if (path.isEmpty()) return;
         bool ok = false;
         const int spp = QInputDialog::getInt(m_window, tr("Render to file"),
-                                             tr("Samples per pixel:"), 64, 1, 1 << 20, 1, &ok);
-        if (ok) this->renderToFile(path, {spp, 0.0}, true, [](const QString&) {});
+                                             tr("Samples per pixel (0: a time budget instead):"), 64, 0,
+                                             1 << 20, 1, &ok);
+        if (!ok) return;
+        double seconds = 0.0;
+        if (spp == 0) {
+            seconds = QInputDialog::getDouble(m_window, tr("Render to file"), tr("Seconds:"), 60.0, 0.1, 1e6, 1, &ok);
+            if (!ok) return;
+        }
+        this->renderToFile(path, {spp, seconds}, true, [](const QString&) {});
     });
     connect(m_recent, &RecentFiles::changed, this, [this] { rebuildRecentMenu(); });
     connect(window->document(), &SceneDocument::sceneOpened, this, [this](auto, const QString& path) {

@@ -34,7 +34,7 @@ OutlineActions::OutlineActions(MainWindow* window) : QObject(window), m_window(w
         auto* a = new QAction(text, window);
         a->setObjectName(name);
         a->setShortcut(key);
-        window->addAction(a);
+        if (key.isEmpty()) window->addAction(a); // keyed ones belong to the outline (below)
         menu->addAction(a);
         return a;
     };

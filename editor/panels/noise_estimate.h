@@ -9,7 +9,10 @@
 // relative to the image's mean luminance. The later frame becomes the kept one, so the estimate
 // is refreshed at 2, 4, 8, ... times the samples. The tracers draw their samples from one
 // scrambled Sobol' sequence, whose later samples fill in the earlier ones' gaps: A and B are then
-// not quite independent and the true error is lower — the estimate errs on the noisy side.
+// not quite independent and the true error is lower. Heavy tails (rare bright paths) pull the
+// other way: at a few spp they are mostly missing from both halves, so the estimate is then low
+// (ring_on_ground, bsdf, 8 spp: 128 % estimated, 297 % measured against 256 spp; the estimate at
+// 256 spp agreed with that measurement within 10 %). docs/scripting.md has the numbers.
 #pragma once
 
 #include "util/image.h"

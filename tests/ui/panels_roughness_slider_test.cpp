@@ -1,8 +1,9 @@
 // The property panel with real input (issue 14): a mouse drag on the roughness slider of the
 // ring's material changes the scene's roughness to the value under the handle, as ONE undo step,
-// and the viewport's image changes (an unchanged scene would render the same samples to the same image); a roughness typed outside [0, 1] is refused with
-// a visible message and the value stays; the BRDF is a combo box of the plugin registry's names;
-// a colour is a swatch (an HDR colour with an intensity beside it); a path has a file button.
+// and the viewport's image changes (an unchanged scene would render the same samples to the same
+// image); a roughness typed outside [0, 1] is refused with a visible message and the value stays;
+// the BRDF is a combo box of the plugin registry's names; a colour is a swatch (an HDR colour with
+// an intensity beside it that scales it); a path has a file button.
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "panels/outline_panel.h"
