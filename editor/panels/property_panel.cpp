@@ -44,7 +44,7 @@ PropertyPanel::PropertyPanel(QWidget* parent)
 
 QString PropertyPanel::title() const { return m_title->text(); }
 
-QString PropertyPanel::message() const { return m_message->isVisible() || !m_message->text().isEmpty() ? m_message->text() : QString(); }
+QString PropertyPanel::message() const { return m_message->text(); }
 
 void PropertyPanel::showMessage(const QString& text) {
     m_message->setText(text);
