@@ -90,6 +90,9 @@ public:
     Q_INVOKABLE QStringList recentFiles() const;
     Q_INVOKABLE QString statusText() const;
     Q_INVOKABLE double noiseEstimate() const;
+    // Vulkan validation messages of the viewport's session so far (tests require 0; the layers
+    // are on with --validation or WAVELIT_VK_VALIDATION=1).
+    Q_INVOKABLE int validationMessages() const;
     // Image files for tests: {width, height, finite, mean: [r, g, b], meanLuminance} or throws;
     // compareImages: {rms, relativeRms, meanA, meanB} over luminance (same size, else throws).
     Q_INVOKABLE QJSValue imageInfo(const QString& path);

@@ -8,6 +8,7 @@
 #include "app/outline_actions.h"
 #include "app/recent_files.h"
 #include "app/scene_document.h"
+#include "viewport/render_controller.h"
 #include "panels/entity_ref.h"
 #include "panels/outline_panel.h"
 #include "panels/render_status_label.h"
@@ -167,6 +168,8 @@ QString AppApi::lastError() const { return m_window->files()->lastError(); }
 QStringList AppApi::recentFiles() const { return m_window->files()->recent()->files(); }
 
 QString AppApi::statusText() const { return m_window->statusLabel()->text(); }
+
+int AppApi::validationMessages() const { return m_window->renderer()->latestFrame().validationMessages; }
 
 double AppApi::noiseEstimate() const { return m_window->statusLabel()->noise().value_or(-1.0); }
 

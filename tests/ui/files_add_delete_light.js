@@ -53,4 +53,5 @@ check(threw.indexOf("already exists") >= 0, "a taken name was not refused: " + t
 try { app.addLight("laser"); threw = ""; } catch (e) { threw = String(e); }
 check(threw.indexOf("laser") >= 0, "an unknown light type was not refused");
 app.waitForSamples(1, 300);
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);

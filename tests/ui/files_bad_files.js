@@ -37,4 +37,5 @@ check(!app.isModified(), "a failed call marked the document modified");
 check(app.undo() === false, "a failed call left an undo step");
 app.setProperty("environment", "rotation", 45);
 check(app.waitForSamples(2, 300) >= 2, "the editor no longer renders after the errors");
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);

@@ -22,4 +22,5 @@ app.openScene(scene);
 check(Math.abs(app.getProperty("material:gold", "roughness") - 0.35) < 1e-6, "the saved file lost the roughness edit");
 check(app.entities().indexOf("Fill") >= 0, "the saved lighting setup lost the added light");
 check(app.windowTitle().indexOf("*") < 0, "marker after reopening");
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);

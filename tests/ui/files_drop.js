@@ -21,4 +21,5 @@ check(!app.isModified(), "undoing every drop did not return to the saved state")
 check(app.dropFile(res + "/scenes/glossy_sphere.wlscene"), "drop .wlscene");
 check(app.scenePath().indexOf("glossy_sphere.wlscene") >= 0, "the dropped scene did not open: " + app.scenePath());
 check(app.waitForSamples(1, 300) >= 1, "no frame of the dropped scene");
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);

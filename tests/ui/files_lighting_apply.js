@@ -59,4 +59,5 @@ check(app.applyLighting(out + "/look.wllight"), "applyLighting again");
 check(app.undo(), "nothing to undo");
 check(app.entities().indexOf("sun") < 0, "undo did not remove the applied sun");
 check(!app.isModified(), "undo did not return to the saved state");
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);

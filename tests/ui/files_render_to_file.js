@@ -32,4 +32,5 @@ check(png.width == 40 && png.height == 32, "png size " + png.width + "x" + png.h
 var threw = false;
 check(app.renderToFile(out + "/none.exr", {}) === false, "a render without a budget started");
 check(app.lastError().indexOf("budget") >= 0, "the missing budget is not named: " + app.lastError());
+check(app.validationMessages() == 0, "Vulkan validation messages: " + app.validationMessages());
 app.quit(0);
