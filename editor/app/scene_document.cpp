@@ -1,6 +1,7 @@
 #include "app/scene_document.h"
 
 #include "commands/property_command.h"
+#include "commands/scene_edit_command.h"
 #include "panels/entity_ref.h"
 
 #include "scene/scene_compare.h"
@@ -218,6 +219,62 @@ void SceneDocument::commit(const PropertyEdit& edit) {
         emit displayChanged(m_scene);
     else
         emit sceneEdited(m_scene, applied->changes);
+}
+
+util::Status SceneDocument::applyChanges(const scene::ChangeSet& changes, const QString& text) {
+    if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
+    scene::Scene check = *m_scene; // refuse a set that does not apply before it reaches the stack
+    if (auto status = changes.apply(check); !status) return status;
+    m_undo->push(new SceneEditCommand(changes, [this](const scene::ChangeSet& c) { commitChanges(c); }, text));
+    return util::okStatus();
+}
+
+void SceneDocument::commitChanges(const scene::ChangeSet& changes) {
+    auto edited = std::make_shared<scene::Scene>(*m_scene);
+    if (auto status = changes.apply(*edited); !status) {
+        emit editFailed(QString::fromStdString(status.error().message()));
+        return;
+    }
+    m_scene = std::move(edited);
+    emit sceneEdited(m_scene, changes);
+}
+
+LightingState SceneDocument::lightingState() const {
+    if (!m_scene) return {};
+    return {m_scene->lighting, m_scene->lightingPath, m_savedLighting};
+}
+
+util::Status SceneDocument::applyLighting(LightingState after, const QString& text) {
+    if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
+    m_undo->push(new LightingCommand(lightingState(), std::move(after),
+                                     [this](const LightingState& s) { commitLighting(s); }, text));
+    return util::okStatus();
+}
+
+void SceneDocument::commitLighting(const LightingState& state) {
+    // The render thread gets every light removed and the new ones added, and every environment
+    // property (the map among them: its texels are new even when the file name is not).
+    scene::ChangeSet changes;
+    for (const scene::Light& light : m_scene->lighting.lights)
+        (void)changes.removeEntity(*m_scene, {EntityKind::Light, light.id});
+    auto edited = std::make_shared<scene::Scene>(*m_scene);
+    edited->lighting = state.lighting;
+    edited->lightingPath = state.lightingPath;
+    for (size_t i = 0; i < state.lighting.lights.size(); ++i)
+        changes.add(scene::EntityEdit{true, i, state.lighting.lights[i]});
+    const EntityRef environment{EntityKind::Environment, scene::kInvalidId};
+    for (const scene::PropertyInfo& info : scene::properties(EntityKind::Environment))
+        changes.add(scene::PropertyEdit{environment, info.name, info.get(&m_scene->lighting.environment),
+                                        info.get(&edited->lighting.environment)});
+    m_scene = std::move(edited);
+    m_savedLighting = state.savedLighting;
+    emit sceneEdited(m_scene, changes);
+}
+
+void SceneDocument::newScene() {
+    auto empty = std::make_shared<scene::Scene>();
+    empty->name = "untitled";
+    setScene(std::move(empty), QString());
 }
 
 util::Status SceneDocument::setExposure(float ev) {
