@@ -102,6 +102,27 @@ glm::vec3 BrdfTable::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     return glm::vec3(sum);
 }
 
+double tableHalfWidthAtNormalView(const BrdfTable& table) {
+    // At normal view f depends on θi only (isotropy): a 1D integral of f cosθ sinθ dθ on a grid
+    // fine near the normal (θ = (π/2) t², the sqrt spacing of MERL's θh bins), midpoint rule.
+    constexpr int kSteps = 4096;
+    std::vector<double> cumulative(kSteps + 1, 0.0);
+    const glm::vec3 n(0.0f, 0.0f, 1.0f);
+    for (int i = 0; i < kSteps; ++i) {
+        const double t0 = double(i) / kSteps, t1 = double(i + 1) / kSteps, tm = 0.5 * (t0 + t1);
+        const double theta = 0.5 * kPiD * tm * tm, dTheta = 0.5 * kPiD * (t1 * t1 - t0 * t0);
+        const glm::vec3 wi(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+        const glm::vec3 f = table.eval(n, wi);
+        const double luminance = 0.2126 * f.r + 0.7152 * f.g + 0.0722 * f.b;
+        cumulative[size_t(i) + 1] = cumulative[size_t(i)] + luminance * std::cos(theta) * std::sin(theta) * dTheta;
+    }
+    if (!(cumulative.back() > 0.0)) return 0.5 * kPiD;
+    const double half = 0.5 * cumulative.back();
+    const size_t i = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), half) - cumulative.begin());
+    const double t = double(std::max<size_t>(i, 1)) / kSteps;
+    return std::clamp(0.5 * kPiD * t * t, 1e-3, 0.5 * kPiD);
+}
+
 util::Result<std::shared_ptr<const BrdfTable>> loadMerlBrdf(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return util::makeError(util::ErrorKind::NotFound, path, "cannot open the measured BRDF file");
@@ -144,6 +165,7 @@ util::Result<std::shared_ptr<const BrdfTable>> loadMerlBrdf(const std::string& p
         }
         table->f[i] = float(v * kMerlScale[i / n]);
     }
+    table->halfWidthAtNormalView = tableHalfWidthAtNormalView(*table);
     return std::shared_ptr<const BrdfTable>(std::move(table));
 }
 
