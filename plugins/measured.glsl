@@ -36,20 +36,42 @@ MeasuredBin measuredPeriodicBin(float fraction, uint bins) {
     return MeasuredBin(i0, (i0 + 1u) % bins, x - float(i0));
 }
 
+// atan(t) for t in [0, 1] to float precision (~1e-7): GLSL's atan may be off by 4096 ulp (the
+// spec's bound; lavapipe's was 5e-4 relative in the table value of some pairs), and a table's
+// value moves by up to a bin's jump per bin of angle. Beyond tan(π/8) the argument is reduced
+// by atan(t) = π/4 + atan((t − 1)/(t + 1)); the series to z^15 then errs by < |z|^17/17 ≈ 2e-8.
+float measuredAtan01(float t) {
+    bool reduced = t > 0.41421356;
+    float z = reduced ? (t - 1.0) / (t + 1.0) : t;
+    float z2 = z * z;
+    float p = z * (1.0 - z2 * (1.0 / 3.0 - z2 * (1.0 / 5.0 - z2 * (1.0 / 7.0 - z2 * (1.0 / 9.0 -
+              z2 * (1.0 / 11.0 - z2 * (1.0 / 13.0 - z2 * (1.0 / 15.0))))))));
+    return reduced ? 0.25 * kPi + p : p;
+}
+
+// atan2(y, x) for y >= 0, in [0, π].
+float measuredAtan2(float y, float x) {
+    float ax = abs(x);
+    if (y == 0.0 && ax == 0.0) return 0.0;
+    float a = y <= ax ? measuredAtan01(y / ax) : 0.5 * kPi - measuredAtan01(ax / y);
+    return x < 0.0 ? kPi - a : a;
+}
+
 // Rusinkiewicz's half/difference angles as brdf_table.cpp's halfDiffOf: (θh, θd, φd in [0, π)).
 // cos φh, sin φh, cos θh, sin θh come from h's components instead of trigonometry of its angles
 // (the same numbers, fewer float roundings).
 vec3 measuredHalfDiff(vec3 wo, vec3 wi) {
     vec3 h = normalize(wo + wi);
     float r = length(h.xy);
-    float thetaH = atan(r, h.z);
+    float thetaH = measuredAtan2(r, h.z);
     float cp = r > 0.0 ? h.x / r : 1.0, sp = r > 0.0 ? h.y / r : 0.0;
     float ct = h.z, st = r;
     float x1 = wi.x * cp + wi.y * sp, y1 = -wi.x * sp + wi.y * cp, z1 = wi.z;
     vec3 d = vec3(x1 * ct - z1 * st, y1, x1 * st + z1 * ct);
-    float phiD = atan(d.y, d.x);
-    if (phiD < 0.0) phiD += kPi;
-    return vec3(thetaH, atan(length(d.xy), d.z), phiD);
+    // φd folded into [0, π): atan2(y, x) + π for y < 0, i.e. π − atan2(|y|, x).
+    float phiD = d.y >= 0.0 ? measuredAtan2(d.y, d.x) : kPi - measuredAtan2(-d.y, d.x);
+    if (phiD >= kPi) phiD -= kPi;
+    return vec3(thetaH, measuredAtan2(length(d.xy), d.z), phiD);
 }
 
 vec3 measuredTable(uint o, vec3 wo, vec3 wi) {

@@ -171,9 +171,12 @@ TEST_P(GgxFurnace, SphereIsEnvironmentTimesDirectionalAlbedo) {
 // under a constant environment L = 1 reflects E(wo) <= 1 at every view, by quadrature of eval()
 // (the rendered sphere matches L x E per sampler: sampler_furnace_test.cpp). Near-mirror (r =
 // 0.02) to rough, normal to grazing (89 degrees), and for anisotropic `ward` several azimuths of
-// the view about the lobe's stretch. `measured`: tables of `glossy` at r = 0.02, 0.3 and 1 and
-// the shipped example. 128 x 128 half-vector cells: ~1e-4 relative (brdf_albedo.h), 10x under
-// the bound.
+// the view about the lobe's stretch. `measured`: tables of white `glossy` at r = 0.5 and 1 in
+// the shipped example's 24 x 64 x 32 bins. A table too coarse for its lobe reflects more than
+// arrives, whatever the plugin does: interpolating a convex peak between bin centres lies above
+// it (r = 0.3 in 24 θh bins: 1.013 at normal view; r = 0.02: 4.6, the first θh centre at
+// 6.8e-4 rad holding a lobe of α = 4e-4; docs/brdfs.md). 128 x 128 half-vector cells: ~1e-4
+// relative (brdf_albedo.h), 10x under the bound.
 TEST(Furnace, EveryPluginReflectsAtMostWhatArrives) {
     constexpr double kWhiteFurnaceBound = 1.0 + 1e-3;
     const float roughnesses[] = {0.02f, 0.3f, 1.0f};
@@ -201,7 +204,7 @@ TEST(Furnace, EveryPluginReflectsAtMostWhatArrives) {
     };
     for (const plugins::Brdf* b : plugins::brdfRegistry()) {
         if (plugins::brdfReadsFile(*b)) {
-            for (float r : roughnesses) {
+            for (float r : {0.5f, 1.0f}) {
                 const auto table = furnace_test::glossyTable(r);
                 ASSERT_TRUE(table);
                 check(*b, plugins::BrdfParams(glm::vec3(1.0f), r, 0.0f, table),
