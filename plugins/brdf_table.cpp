@@ -48,8 +48,11 @@ struct HalfDiff {
 
 // Rusinkiewicz's half/difference angles as MERL's reader computes them: h = normalize(wi + wo),
 // the difference vector is wi rotated by −φh about the normal, then by −θh about the binormal.
-HalfDiff halfDiffOf(const glm::vec3& wo, const glm::vec3& wi) {
-    const glm::dvec3 h = glm::normalize(glm::dvec3(wo) + glm::dvec3(wi));
+// Both directions are renormalised first: float unit vectors are off by ~1e-7, which tilts h off
+// the bisector and made f(wo, wi) and f(wi, wo) differ by 1.3e-5 on a sharp table.
+HalfDiff halfDiffOf(const glm::vec3& woFloat, const glm::vec3& wiFloat) {
+    const glm::dvec3 wo = glm::normalize(glm::dvec3(woFloat)), wi = glm::normalize(glm::dvec3(wiFloat));
+    const glm::dvec3 h = glm::normalize(wo + wi);
     const double thetaH = std::atan2(std::sqrt(h.x * h.x + h.y * h.y), h.z);
     const double phiH = std::atan2(h.y, h.x);
     const glm::dvec3 in(wi);

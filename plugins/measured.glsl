@@ -60,7 +60,8 @@ float measuredAtan2(float y, float x) {
 // Rusinkiewicz's half/difference angles as brdf_table.cpp's halfDiffOf: (θh, θd, φd in [0, π)).
 // cos φh, sin φh, cos θh, sin θh come from h's components instead of trigonometry of its angles
 // (the same numbers, fewer float roundings).
-vec3 measuredHalfDiff(vec3 wo, vec3 wi) {
+vec3 measuredHalfDiff(vec3 woIn, vec3 wiIn) {
+    vec3 wo = normalize(woIn), wi = normalize(wiIn); // as brdf_table.cpp (reciprocity)
     vec3 h = normalize(wo + wi);
     float r = length(h.xy);
     float thetaH = measuredAtan2(r, h.z);
