@@ -48,8 +48,11 @@ struct HalfDiff {
 
 // Rusinkiewicz's half/difference angles as MERL's reader computes them: h = normalize(wi + wo),
 // the difference vector is wi rotated by −φh about the normal, then by −θh about the binormal.
-HalfDiff halfDiffOf(const glm::vec3& wo, const glm::vec3& wi) {
-    const glm::dvec3 h = glm::normalize(glm::dvec3(wo) + glm::dvec3(wi));
+// Both directions are renormalised first: float unit vectors are off by ~1e-7, which tilts h off
+// the bisector and made f(wo, wi) and f(wi, wo) differ by 1.3e-5 on a sharp table.
+HalfDiff halfDiffOf(const glm::vec3& woFloat, const glm::vec3& wiFloat) {
+    const glm::dvec3 wo = glm::normalize(glm::dvec3(woFloat)), wi = glm::normalize(glm::dvec3(wiFloat));
+    const glm::dvec3 h = glm::normalize(wo + wi);
     const double thetaH = std::atan2(std::sqrt(h.x * h.x + h.y * h.y), h.z);
     const double phiH = std::atan2(h.y, h.x);
     const glm::dvec3 in(wi);
@@ -102,6 +105,27 @@ glm::vec3 BrdfTable::eval(const glm::vec3& wo, const glm::vec3& wi) const {
     return glm::vec3(sum);
 }
 
+double tableHalfWidthAtNormalView(const BrdfTable& table) {
+    // At normal view f depends on θi only (isotropy): a 1D integral of f cosθ sinθ dθ on a grid
+    // fine near the normal (θ = (π/2) t², the sqrt spacing of MERL's θh bins), midpoint rule.
+    constexpr int kSteps = 4096;
+    std::vector<double> cumulative(kSteps + 1, 0.0);
+    const glm::vec3 n(0.0f, 0.0f, 1.0f);
+    for (int i = 0; i < kSteps; ++i) {
+        const double t0 = double(i) / kSteps, t1 = double(i + 1) / kSteps, tm = 0.5 * (t0 + t1);
+        const double theta = 0.5 * kPiD * tm * tm, dTheta = 0.5 * kPiD * (t1 * t1 - t0 * t0);
+        const glm::vec3 wi(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+        const glm::vec3 f = table.eval(n, wi);
+        const double luminance = 0.2126 * f.r + 0.7152 * f.g + 0.0722 * f.b;
+        cumulative[size_t(i) + 1] = cumulative[size_t(i)] + luminance * std::cos(theta) * std::sin(theta) * dTheta;
+    }
+    if (!(cumulative.back() > 0.0)) return 0.5 * kPiD;
+    const double half = 0.5 * cumulative.back();
+    const size_t i = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), half) - cumulative.begin());
+    const double t = double(std::max<size_t>(i, 1)) / kSteps;
+    return std::clamp(0.5 * kPiD * t * t, 1e-3, 0.5 * kPiD);
+}
+
 util::Result<std::shared_ptr<const BrdfTable>> loadMerlBrdf(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return util::makeError(util::ErrorKind::NotFound, path, "cannot open the measured BRDF file");
@@ -144,6 +168,7 @@ util::Result<std::shared_ptr<const BrdfTable>> loadMerlBrdf(const std::string& p
         }
         table->f[i] = float(v * kMerlScale[i / n]);
     }
+    table->halfWidthAtNormalView = tableHalfWidthAtNormalView(*table);
     return std::shared_ptr<const BrdfTable>(std::move(table));
 }
 

@@ -30,6 +30,9 @@ struct BrdfTable {
     int thetaHalfBins = 90, thetaDiffBins = 90, phiDiffBins = 180;
     std::vector<float> f; // RGB per bin, already multiplied by kMerlScale: 3 * binCount() floats
     std::string file;     // where it was loaded from (for messages)
+    // The cone about the normal holding half of f cosθi at normal view (radians; loadMerlBrdf
+    // fills it): the lobe half-width `measured` declares to the samplers (plugins/brdf.h).
+    double halfWidthAtNormalView = 0.5 * 3.14159265358979323846;
 
     size_t binCount() const { return size_t(thetaHalfBins) * thetaDiffBins * phiDiffBins; }
     // The bin MERL's reader would look up (nearest).
@@ -37,6 +40,10 @@ struct BrdfTable {
     // f(wo, wi) in the local frame (z = normal), 0 below the horizon.
     glm::vec3 eval(const glm::vec3& wo, const glm::vec3& wi) const;
 };
+
+// The angle θ about the normal within which half of ∫ luminance(f(n, wi)) cosθi dwi lies, for a
+// view along the normal n (where the mirror direction is n too); π/2 for a table that is 0 there.
+double tableHalfWidthAtNormalView(const BrdfTable& table);
 
 // Errors name the file: unreadable, counts that are not positive or too large, a size that does
 // not match the counts ("expected 34,992,012 bytes for 90 x 90 x 180 bins, found 4,096"), and the

@@ -59,19 +59,11 @@ Draws draw(const Brdf& brdf, const BrdfParams& p, const glm::vec3& wo) {
     return d;
 }
 
-// `measured` is the one plugin without a GLSL twin so far (its table has no device buffer; the
-// GPU tracer refuses its materials by name: gpu_brdf_scene_test.cpp). Listed here so that a
-// second plugin without a twin, or measured gaining one, is a visible change to this test.
-bool cpuOnly(const Brdf& b) { return std::string(b.name()) == "measured"; }
-
 TEST(BrdfTraits, EveryPluginIsCoherentAndHasAGpuTwin) {
     ASSERT_FALSE(brdfRegistry().empty());
     for (const Brdf* b : brdfRegistry()) {
         EXPECT_EQ(brdfTraitsProblem(*b), "") << b->name();
-        if (cpuOnly(*b))
-            EXPECT_NE(brdfGpuTwinProblem(*b), "") << b->name();
-        else
-            EXPECT_EQ(brdfGpuTwinProblem(*b), "") << b->name();
+        EXPECT_EQ(brdfGpuTwinProblem(*b), "") << b->name();
         EXPECT_EQ(brdfRegistry()[size_t(brdfIndex(*b))], b) << b->name();
     }
     EXPECT_NE(findBrdf(defaultBrdfName()), nullptr);
@@ -122,8 +114,6 @@ TEST(BrdfTraits, LobeAxisIsWhereTheSamplesGo) {
 TEST(BrdfTraits, GpuTwinSnippetDefinesItsFunctions) {
     const std::filesystem::path dir = WAVELIT_PLUGIN_DIR; // where the GPU tracer reads them
     for (const Brdf* b : brdfRegistry()) {
-        if (cpuOnly(*b))
-            continue;
         const BrdfGpuTwin t = b->gpuTwin();
         std::ifstream file(dir / t.snippet);
         ASSERT_TRUE(file) << b->name() << ": " << (dir / t.snippet);

@@ -6,8 +6,9 @@
 // Sampling: cosine-weighted (pdf = cosθi/π), so every direction the table can reflect into is
 // reachable whatever the data; the lobe is declared about the normal with the whole hemisphere
 // as its width, which the product samplers then resolve from the tabulated f itself
-// (docs/brdfs.md: what this costs on glossy data). No GLSL twin: the GPU tracer refuses a
-// measured material by name (the table would need a buffer of its own; docs/brdfs.md).
+// (docs/brdfs.md: what this costs on glossy data). GLSL twin: measured.glsl, which reads the
+// scene's tables from a storage buffer (render/gpu/gpu_brdf_tables.h) and finds a material's
+// table by the offset the GPU material carries in its roughness slot.
 #include "plugins/brdf.h"
 #include "plugins/brdf_table.h"
 
@@ -31,10 +32,16 @@ public:
     const char* name() const override { return "measured"; }
     std::span<const BrdfParameterInfo> parameters() const override { return kParameters; }
     BrdfLobeAxis lobeAxis() const override { return BrdfLobeAxis::Normal; }
-    BrdfLobeWidth lobeWidth(const BrdfParams&) const override {
-        return {0.5 * std::numbers::pi, 3.2};
+    // The lobe about the normal over the whole sphere (cosine sampling reaches all of it); its
+    // half-width is the table's own at normal view (BrdfTable::halfWidthAtNormalView): a glossy
+    // table then gets the product sampler's lobe refinement at its lobe's scale instead of at the
+    // hemisphere's (docs/brdfs.md "Lobe-width hints"). π/2 without a table.
+    BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
+        return {p.table ? p.table->halfWidthAtNormalView : 0.5 * std::numbers::pi, 3.2};
     }
-    BrdfGpuTwin gpuTwin() const override { return {}; }
+    BrdfGpuTwin gpuTwin() const override {
+        return {"measured.glsl", "measuredSample", "measuredEval", "measuredPdf"};
+    }
 
     glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
         if (!p.table || wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);

@@ -12,6 +12,7 @@
 #include "render/session/integrator_factory.h"
 
 #include "plugins/brdf.h"
+#include "plugins/testing/brdf_albedo.h"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace wavelit {
 namespace {
@@ -163,6 +165,63 @@ TEST_P(GgxFurnace, SphereIsEnvironmentTimesDirectionalAlbedo) {
         std::printf("[furnace] ggx r=%.2f channel %d: rendered/expected = %.5f\n",
                     GetParam().roughness, c, ratio);
     }
+}
+
+// The white furnace for every plugin (issue 16: albedo <= 1 + 1e-3): baseColor 1, so the sphere
+// under a constant environment L = 1 reflects E(wo) <= 1 at every view, by quadrature of eval()
+// (the rendered sphere matches L x E per sampler: sampler_furnace_test.cpp). Near-mirror (r =
+// 0.02) to rough, normal to grazing (89 degrees), and for anisotropic `ward` several azimuths of
+// the view about the lobe's stretch. `measured`: tables of white `glossy` at r = 0.5 and 1 in
+// the shipped example's 24 x 64 x 32 bins. A table too coarse for its lobe reflects more than
+// arrives, whatever the plugin does: interpolating a convex peak between bin centres lies above
+// it (r = 0.3 in 24 θh bins: 1.013 at normal view; r = 0.02: 4.6, the first θh centre at
+// 6.8e-4 rad holding a lobe of α = 4e-4; docs/brdfs.md). 128 x 128 half-vector cells: ~1e-4
+// relative (brdf_albedo.h), 10x under the bound.
+TEST(Furnace, EveryPluginReflectsAtMostWhatArrives) {
+    constexpr double kWhiteFurnaceBound = 1.0 + 1e-3;
+    const float roughnesses[] = {0.02f, 0.3f, 1.0f};
+    const float cosViews[] = {1.0f, 0.5f, 0.0872f, 0.0175f};
+    const float azimuths[] = {0.0f, 0.8f, 1.5708f};
+    int checked = 0;
+    double worst = 0.0;
+    std::string worstCase;
+    auto check = [&](const plugins::Brdf& b, const plugins::BrdfParams& p, const std::string& label) {
+        for (float c : cosViews)
+            for (float phi : azimuths) {
+                if (p.anisotropy == 0.0f && phi != azimuths[1]) continue; // isotropic: one azimuth
+                const float s = std::sqrt(1.0f - c * c);
+                const glm::vec3 wo(s * std::cos(phi), s * std::sin(phi), c);
+                const glm::dvec3 e = plugins::directionalAlbedo(b, p, wo, 128, 128);
+                for (int ch = 0; ch < 3; ++ch) {
+                    EXPECT_LE(e[ch], kWhiteFurnaceBound) << label << " cos " << c << " phi " << phi;
+                    if (e[ch] > worst) {
+                        worst = e[ch];
+                        worstCase = label + " cos " + std::to_string(c);
+                    }
+                }
+                ++checked;
+            }
+    };
+    for (const plugins::Brdf* b : plugins::brdfRegistry()) {
+        if (plugins::brdfReadsFile(*b)) {
+            for (float r : {0.5f, 1.0f}) {
+                const auto table = furnace_test::glossyTable(r);
+                ASSERT_TRUE(table);
+                check(*b, plugins::BrdfParams(glm::vec3(1.0f), r, 0.0f, table),
+                      std::string(b->name()) + " (glossy r=" + std::to_string(r) + ")");
+            }
+            continue;
+        }
+        for (float r : roughnesses)
+            for (float a : {0.0f, 0.9f}) {
+                if (a > 0.0f && b->gpuTwin().typeParameter == nullptr) continue; // reads no anisotropy
+                check(*b, plugins::BrdfParams(glm::vec3(1.0f), r, a),
+                      std::string(b->name()) + " r=" + std::to_string(r) + " a=" + std::to_string(a));
+            }
+    }
+    std::printf("[furnace] white furnace: %d (plugin, setting, view) cases, highest albedo %.5f (%s)\n",
+                checked, worst, worstCase.c_str());
+    EXPECT_GT(checked, 60);
 }
 
 INSTANTIATE_TEST_SUITE_P(Roughness, GgxFurnace,

@@ -11,14 +11,18 @@
 #include "scene/bvh.h"
 
 #include "plugins/brdf.h"
+#include "plugins/brdf_table.h"
 #include "plugins/testing/brdf_albedo.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace wavelit::furnace_test {
@@ -102,6 +106,18 @@ private:
     static constexpr int kNodes = 64;
     std::vector<glm::dvec3> m_values;
 };
+
+// A MERL-layout table of `glossy` (white, roughness r, 24 x 64 x 32 bins like the shipped
+// example), written and read back through the file format; nullptr if that fails.
+inline std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
+    const std::vector<char> bytes = plugins::tabulateMerlBrdf(
+        *plugins::findBrdf("glossy"), plugins::BrdfParams(glm::vec3(1.0f), r), 24, 64, 32);
+    const std::string path = ::testing::TempDir() + "wavelit_furnace_glossy_table.binary";
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    auto table = plugins::loadMerlBrdf(path);
+    std::remove(path.c_str());
+    return table ? *table : nullptr;
+}
 
 inline void expectFinite(const util::ImageRGB& img) {
     for (const glm::vec3& p : img.pixels)

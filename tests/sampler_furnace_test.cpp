@@ -10,6 +10,9 @@
 #include "render/session/integrator_factory.h"
 
 #include "plugins/brdf.h"
+#include "plugins/brdf_table.h"
+#include "plugins/testing/brdf_albedo.h"
+#include "util/hemisphere_sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -55,15 +58,39 @@ struct SweepMaterial {
     const char* brdf;
     float roughness;
     glm::vec3 color;
+    float anisotropy = 0.0f;
 };
+// The issue-16 plugins follow GGX; `measured` renders the shipped example table (glossy r = 0.5).
 const SweepMaterial kSweepMaterials[] = {
     {"lambert", "lambert", 0.5f, {0.8f, 0.5f, 0.2f}},
     {"ggx r=0.05", "ggx", 0.05f, glm::vec3(1.0f)},
     {"ggx r=0.3", "ggx", 0.3f, {0.9f, 0.6f, 0.3f}},
     {"ggx r=1", "ggx", 1.0f, glm::vec3(1.0f)},
     {"ggx r=0.6 f0=0.04", "ggx", 0.6f, glm::vec3(0.04f)},
+    {"glossy r=0.3", "glossy", 0.3f, {0.9f, 0.6f, 0.3f}},
+    {"phong r=0.3", "phong", 0.3f, {0.9f, 0.6f, 0.3f}},
+    {"blinn r=0.3", "blinn", 0.3f, {0.9f, 0.6f, 0.3f}},
+    {"ward r=0.3", "ward", 0.3f, {0.9f, 0.6f, 0.3f}},
+    {"ward r=0.4 a=0.9", "ward", 0.4f, glm::vec3(1.0f), 0.9f},
+    {"measured example", "measured", 0.5f, glm::vec3(1.0f)},
 };
-enum { kLambert, kGgxMirrorish, kGgx03, kGgxRough, kGgxDielectric };
+enum { kLambert, kGgxMirrorish, kGgx03, kGgxRough, kGgxDielectric, kGlossy, kPhong, kBlinn, kWard,
+       kWardAniso, kMeasured };
+
+// The shipped example measured table, loaded once.
+std::shared_ptr<const plugins::BrdfTable> exampleTable() {
+    static const std::shared_ptr<const plugins::BrdfTable> kTable = [] {
+        auto t = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) + "/brdfs/glossy-copper-r05.binary");
+        EXPECT_TRUE(t.ok()) << (t.ok() ? "" : t.error().message());
+        return t.ok() ? *t : nullptr;
+    }();
+    return kTable;
+}
+
+plugins::BrdfParams paramsOf(const SweepMaterial& m) {
+    return plugins::BrdfParams(m.color, m.roughness, m.anisotropy,
+                               std::string(m.brdf) == "measured" ? exampleTable() : nullptr);
+}
 
 enum class Bound { OnePercent, Unbiased };
 
@@ -83,14 +110,20 @@ std::string sweepName(const ::testing::TestParamInfo<SweepCase>& info) {
 }
 
 // Expected sphere pixels: L x E(mu) averaged over each pixel's footprint (E = rho for Lambert).
-// Tabulating E costs ~1M BRDF evaluations, so each material's table is built once.
+// Tabulating E costs ~1M BRDF evaluations, so each material's table is built once. An
+// anisotropic lobe's E also depends on the view's azimuth in the shading frame (the tangent the
+// tracers build from the normal: util::Frame), so there each sub-pixel's own view is integrated
+// (32 x 32 cells: ~1e-4 relative for these lobes, far below the 1% bound), once per material.
 std::vector<glm::dvec3> expectedSphere(const Furnace& f, const SweepMaterial& m, glm::vec3 env,
                                        const std::vector<PixelKind>& kinds) {
     static std::map<int, AlbedoTable> tables;
+    static std::map<int, std::vector<glm::dvec3>> anisotropic; // the same furnace for every kind
     const int key = int(&m - kSweepMaterials);
-    const plugins::BrdfParams params{m.color, m.roughness};
+    if (m.anisotropy > 0.0f)
+        if (auto done = anisotropic.find(key); done != anisotropic.end()) return done->second;
+    const plugins::BrdfParams params = paramsOf(m);
     auto it = tables.find(key);
-    if (it == tables.end())
+    if (it == tables.end() && m.anisotropy == 0.0f)
         it = tables.emplace(key, AlbedoTable(*plugins::findBrdf(m.brdf), params)).first;
     const bool lambert = std::string(m.brdf) == "lambert";
     render::CpuCamera cam(f.scene->camera, f.size, f.size);
@@ -108,10 +141,17 @@ std::vector<glm::dvec3> expectedSphere(const Furnace& f, const SweepMaterial& m,
                     render::SurfacePoint sp;
                     const float u = (a + 0.5f) / kSubpixels, v = (b + 0.5f) / kSubpixels;
                     if (!f.hits(cam, x, y, u, v, &sp)) continue; // classify() said all hit
-                    expected[i] += it->second(glm::dot(-cam.direction(x, y, u, v), sp.shading));
+                    const glm::vec3 view = -cam.direction(x, y, u, v);
+                    if (m.anisotropy > 0.0f)
+                        expected[i] += plugins::directionalAlbedo(
+                            *plugins::findBrdf(m.brdf), params,
+                            util::Frame::fromNormal(sp.shading).toLocal(view), 32, 32);
+                    else
+                        expected[i] += it->second(glm::dot(view, sp.shading));
                 }
             expected[i] *= glm::dvec3(env) / double(kSubpixels * kSubpixels);
         }
+    if (m.anisotropy > 0.0f) anisotropic[key] = expected;
     return expected;
 }
 
@@ -124,6 +164,8 @@ TEST_P(SamplerFurnace, SphereTotalIsEnvironmentTimesAlbedo) {
     m.brdf = sm.brdf;
     m.roughness = sm.roughness;
     m.baseColor = sm.color;
+    m.anisotropy = sm.anisotropy;
+    m.brdfTable = paramsOf(sm).table;
     const glm::vec3 env(1.0f, 0.5f, 2.0f);
     Furnace f(m, env, kSweepSize);
     f.options.sampler = c.kind;
@@ -211,6 +253,30 @@ const SweepCase kSweep[] = {
     // 2.5-3 s per pass: two materials only (see above).
     {render::SamplerKind::Oracle, kLambert, 4, Bound::OnePercent},
     {render::SamplerKind::Oracle, kGgx03, 6, Bound::OnePercent},
+    // Issue 16's plugins: bsdf (each plugin's own sampling), mis and wavelet on every one; passes
+    // from the needed counts measured 2026-12-02 (in brackets) with the margin above. `measured`
+    // is cosine-sampled (docs/brdfs.md): bsdf on its glossy example would need ~950 passes for 1%
+    // and checks unbiasedness at 4 sigma; mis (~18 ms a pass) takes the 1% bound; wavelet (48
+    // passes, but ~1 s a pass on the loaded 2-core machine: a whole-sphere product per hit) is
+    // checked at 4 sigma.
+    {render::SamplerKind::Bsdf, kGlossy, 16, Bound::OnePercent},     // [5-8]
+    {render::SamplerKind::Bsdf, kPhong, 4, Bound::OnePercent},       // [1]
+    {render::SamplerKind::Bsdf, kBlinn, 12, Bound::OnePercent},      // [5]
+    {render::SamplerKind::Bsdf, kWard, 12, Bound::OnePercent},       // [4]
+    {render::SamplerKind::Bsdf, kWardAniso, 28, Bound::OnePercent},  // [18]
+    {render::SamplerKind::Bsdf, kMeasured, 64, Bound::Unbiased},     // [952]
+    {render::SamplerKind::Mis, kGlossy, 30, Bound::OnePercent},      // [20]
+    {render::SamplerKind::Mis, kPhong, 8, Bound::OnePercent},        // [3]
+    {render::SamplerKind::Mis, kBlinn, 24, Bound::OnePercent},       // [8-15]
+    {render::SamplerKind::Mis, kWard, 24, Bound::OnePercent},        // [8-15]
+    {render::SamplerKind::Mis, kWardAniso, 48, Bound::OnePercent},   // [33]
+    {render::SamplerKind::Mis, kMeasured, 640, Bound::OnePercent},   // [457]
+    {render::SamplerKind::Wavelet, kGlossy, 10, Bound::OnePercent},  // [6]
+    {render::SamplerKind::Wavelet, kPhong, 4, Bound::OnePercent},    // [2]
+    {render::SamplerKind::Wavelet, kBlinn, 6, Bound::OnePercent},    // [3]
+    {render::SamplerKind::Wavelet, kWard, 6, Bound::OnePercent},     // [3]
+    {render::SamplerKind::Wavelet, kWardAniso, 32, Bound::OnePercent}, // [21]
+    {render::SamplerKind::Wavelet, kMeasured, 16, Bound::Unbiased},    // [48]; 72: 1.0005 +- 0.0029
 };
 
 INSTANTIATE_TEST_SUITE_P(EverySampler, SamplerFurnace, ::testing::ValuesIn(kSweep), sweepName);

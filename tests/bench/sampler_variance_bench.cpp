@@ -8,6 +8,9 @@
 // oracle ratio — our efficiency figure — and mis / wavelet), plus table build and per-point
 // construction times. docs/sampler-variance.md holds a run's output. Plain main: no timing is
 // asserted anywhere (architecture.md §8).
+// --brdfs replaces the GGX/Lambert list with the issue-16 plugins (glossy, phong, blinn, ward
+// isotropic and anisotropic, measured) at three settings each, and the kinds with bsdf, mis and
+// wavelet (docs/brdfs.md's variance table).
 // --gpu adds the Vulkan tracer's `wavelet` and `oracle` (built differently from the CPU's): their
 // mixtures are built on the device at the same shading point and read back (gpu_sampler_probe.h),
 // and their exact variance computed on the same dense grid. (The GPU's other kinds are twins.)
@@ -15,6 +18,7 @@
 #include "render/testing/gpu_sampler_probe.h"
 #include "render/testing/sampler_integrals.h"
 #include "render/testing/sampler_test_envs.h"
+#include "plugins/brdf_table.h"
 #include "util/timer.h"
 
 #include <glm/geometric.hpp>
@@ -23,6 +27,8 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -71,22 +77,74 @@ probeGpu(vk::Context* gpu, const DirectionSamplerTables& wavelet,
     return out;
 }
 
-void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool includeLambert,
-              vk::Context* gpu) {
+// A material of the study and the radius (radians) around the reflection vector where the dense
+// grid refines (0: none; lobes wider than ~0.3 rad need no refinement).
+struct StudyMaterial {
+    SamplerMaterial material;
+    double hotRadius;
+};
+
+std::vector<StudyMaterial> ggxAndLambert() {
+    std::vector<StudyMaterial> out;
+    for (double r : kRoughness) {
+        char name[32];
+        std::snprintf(name, sizeof name, "ggx r=%.2f", r);
+        out.push_back({{name, plugins::findBrdf("ggx"), {glm::vec3(0.9f), float(r)}},
+                       r < 0.3 ? 8.0 * r * r + 0.01 : 0.0});
+    }
+    out.push_back({{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}, 0.0});
+    return out;
+}
+
+// A MERL-layout table of `glossy` at roughness r, through the file format (as a scene loads it).
+std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
+    const std::vector<char> bytes = plugins::tabulateMerlBrdf(
+        *plugins::findBrdf("glossy"), {glm::vec3(0.9f), r}, 24, 64, 32);
+    const std::string path = (std::filesystem::temp_directory_path() /
+                              ("wavelit_variance_glossy_" + std::to_string(int(r * 100)) + ".binary"))
+                                 .string();
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    auto table = plugins::loadMerlBrdf(path);
+    std::filesystem::remove(path);
+    if (!table) {
+        std::fprintf(stderr, "%s\n", table.error().message().c_str());
+        std::exit(1);
+    }
+    return *table;
+}
+
+// The issue-16 plugins at a near-mirror-ish, a medium and a rough setting; `measured` holds
+// `glossy` tabulated at the same roughness (24 x 64 x 32 bins, as the shipped example).
+std::vector<StudyMaterial> issue16Brdfs() {
+    std::vector<StudyMaterial> out;
+    for (const char* brdf : {"glossy", "phong", "blinn", "ward", "ward aniso", "measured"})
+        for (float r : {0.1f, 0.2f, 0.5f}) {
+            const bool aniso = std::string(brdf) == "ward aniso";
+            const bool measured = std::string(brdf) == "measured";
+            char name[48];
+            std::snprintf(name, sizeof name, "%s r=%.2f%s", brdf, double(r), aniso ? " a=0.8" : "");
+            plugins::BrdfParams params(glm::vec3(0.9f), r, aniso ? 0.8f : 0.0f,
+                                       measured ? glossyTable(r) : nullptr);
+            const plugins::Brdf* plugin = plugins::findBrdf(aniso ? "ward" : brdf);
+            // The dense grid refines over the lobe's cap (the plugin's own trait) about the
+            // reflection vector; a measured table is refined as the model it holds.
+            const double cap = measured ? plugins::findBrdf("glossy")->lobeWidth(params).capHalfAngle
+                                        : plugin->lobeWidth(params).capHalfAngle;
+            out.push_back({{name, plugin, params}, r < 0.3f ? 1.5 * cap + 0.01 : 0.0});
+        }
+    return out;
+}
+
+void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
+              const std::vector<StudyMaterial>& list, vk::Context* gpu) {
     const glm::vec3 n(0, 1, 0), t(1, 0, 0), b(0, 0, -1);
     const float s45 = std::sqrt(0.5f);
     const glm::vec3 wo(s45, s45, 0.0f);
     const glm::vec3 reflection(-s45, s45, 0.0f);
 
     std::vector<SamplerMaterial> materials;
-    for (double r : kRoughness) {
-        char name[32];
-        std::snprintf(name, sizeof name, "ggx r=%.2f", r);
-        materials.push_back({name, plugins::findBrdf("ggx"), {glm::vec3(0.9f), float(r)}});
-    }
-    if (includeLambert)
-        materials.push_back({"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}});
-
+    for (const StudyMaterial& m : list)
+        materials.push_back(m.material);
     util::Timer timer;
     auto wavelet = DirectionSamplerTables::build(study.env, materials, SamplerKind::Wavelet);
     std::printf("\n### %s\n\nTables: %.0f ms in all.\n```\n%s```\n\n", study.name.c_str(),
@@ -110,13 +168,11 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool in
     std::printf("\n");
     std::vector<std::string> timings;
     for (size_t mi = 0; mi < materials.size(); ++mi) {
-        const bool lambert = mi >= std::size(kRoughness);
-        const double r = lambert ? 1.0 : kRoughness[mi];
         const ShadingPoint point{n, t, b, wo, mi};
         DenseIntegrandOptions options;
-        if (r < 0.3) { // narrow lobes: finer cells near the reflection vector
+        if (list[mi].hotRadius > 0.0) { // narrow lobes: finer cells near the reflection vector
             options.hotSpots = {reflection};
-            options.hotRadius = 8.0 * r * r + 0.01;
+            options.hotRadius = list[mi].hotRadius;
         }
         const DirectionSampler reference(*wavelet, SamplerKind::Bsdf, point);
         const DenseIntegrand integrand(
@@ -154,8 +210,11 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds, bool in
             if (k == SamplerKind::Mis) vMis = rel;
             if (k == SamplerKind::Bsdf) vBsdf = rel;
         }
-        std::printf(" %.2f | %.2f | %.2f |", vWavelet / vOracle, vMis / vWavelet,
-                    vBsdf / vWavelet);
+        if (vOracle > 0.0)
+            std::printf(" %.2f |", vWavelet / vOracle);
+        else
+            std::printf(" - |");
+        std::printf(" %.2f | %.2f |", vMis / vWavelet, vBsdf / vWavelet);
         if (gpu) {
             double v[2] = {0.0, 0.0};
             int slot = 0;
@@ -192,13 +251,15 @@ std::string resourceDir() {
 
 int main(int argc, char** argv) {
     std::vector<SamplerKind> kinds = allSamplerKinds();
-    bool quick = false, useGpu = false;
+    bool quick = false, useGpu = false, issue16 = false;
     std::string only; // --env NAME: run one study (sun, city, courtyard)
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0)
             quick = true;
         else if (std::strcmp(argv[i], "--gpu") == 0)
             useGpu = true;
+        else if (std::strcmp(argv[i], "--brdfs") == 0)
+            issue16 = true;
         else if (std::strcmp(argv[i], "--env") == 0 && i + 1 < argc)
             only = argv[++i];
     }
@@ -231,7 +292,11 @@ int main(int argc, char** argv) {
         }
         gpu = std::move(ctx.value());
     }
+    // The issue-16 table compares wavelet with mis (and the plugin's own sampling); the other
+    // kinds' dense moments would triple the run.
+    if (issue16)
+        kinds = {SamplerKind::Bsdf, SamplerKind::Mis, SamplerKind::Wavelet};
     for (const Study& s : studies)
-        runStudy(s, kinds, true, gpu.get());
+        runStudy(s, kinds, issue16 ? issue16Brdfs() : ggxAndLambert(), gpu.get());
     return 0;
 }

@@ -10,6 +10,8 @@ namespace {
 
 // One `if (plugin == i) return call;` line per plugin with a GLSL twin; a twin that reads a
 // type parameter (plugins/brdf.h: BrdfGpuTwin::typeParameter) gets it decoded as its first argument.
+// A plugin that reads a data file (`measured`) reads it from the tables buffer, which only kernels
+// compiled with kBrdfTableBindingDefine bind: elsewhere it has no case (an invalid sample, f = 0).
 std::string cases(const char* plugins::BrdfGpuTwin::*fn, const char* args) {
     std::string out = "    uint plugin = type % " + std::to_string(plugins::kBrdfTypeCodePlugins) + "u;\n";
     const auto all = plugins::brdfRegistry();
@@ -17,8 +19,13 @@ std::string cases(const char* plugins::BrdfGpuTwin::*fn, const char* args) {
         if (!plugins::brdfGpuTwinProblem(*all[i]).empty())
             continue;
         const plugins::BrdfGpuTwin twin = all[i]->gpuTwin();
+        const bool readsTables = plugins::brdfReadsFile(*all[i]);
+        if (readsTables)
+            out += std::string("#ifdef ") + kBrdfTableBindingDefine + "\n";
         out += "    if (plugin == " + std::to_string(i) + "u) return " + (twin.*fn) + "(" +
                (twin.typeParameter ? "brdfTypeParameter(type), " : "") + args + ");\n";
+        if (readsTables)
+            out += "#endif\n";
     }
     return out;
 }
@@ -36,9 +43,16 @@ std::string brdfDispatchGlsl() {
                     "float brdfTypeParameter(uint type) {\n"
                     "    return float(type / " + std::to_string(plugins::kBrdfTypeCodePlugins) +
                     "u) / " + std::to_string(plugins::kBrdfTypeParameterSteps) + ".0;\n}\n";
-    for (const plugins::Brdf* b : plugins::brdfRegistry())
-        if (plugins::brdfGpuTwinProblem(*b).empty())
-            g += std::string("#include \"") + b->gpuTwin().snippet + "\"\n";
+    for (const plugins::Brdf* b : plugins::brdfRegistry()) {
+        if (!plugins::brdfGpuTwinProblem(*b).empty())
+            continue;
+        const bool readsTables = plugins::brdfReadsFile(*b);
+        if (readsTables)
+            g += std::string("#ifdef ") + kBrdfTableBindingDefine + "\n";
+        g += std::string("#include \"") + b->gpuTwin().snippet + "\"\n";
+        if (readsTables)
+            g += "#endif\n";
+    }
     g += "bool brdfSample(uint type, vec3 baseColor, float roughness, vec3 wo, float u1, float u2,\n"
          "                out vec3 wi, out vec3 f, out float pdf) {\n" +
          cases(&plugins::BrdfGpuTwin::sampleFn, "baseColor, roughness, wo, u1, u2, wi, f, pdf") +

@@ -15,6 +15,11 @@
 
 namespace wavelit::render {
 
+// A kernel that binds the BRDF tables buffer (the scene's measured tables: gpu_brdf_tables.h)
+// defines this as its binding number; without it the dispatch has no case for plugins that read
+// a data file (`measured`), so kernels that never see such a material need not bind it.
+inline constexpr const char* kBrdfTableBindingDefine = "WAVELIT_BRDF_TABLE_BINDING";
+
 // The generated GLSL: the twins' #includes and the three dispatch functions, defining
 // WAVELIT_BRDF_DISPATCH (shaders/common/brdf.glsl checks it).
 std::string brdfDispatchGlsl();

@@ -36,6 +36,30 @@ TEST(BrdfShaderSource, OneCasePerRegisteredPluginOnItsTypeCode) {
     }
 }
 
+// A plugin that reads a table (`measured`) is included and dispatched only where the kernel binds
+// the tables buffer (kBrdfTableBindingDefine); a kernel that does not still compiles, without it.
+TEST(BrdfShaderSource, TablePluginsOnlyWhereTheKernelBindsTheTables) {
+    const std::string glsl = brdfDispatchGlsl();
+    const plugins::Brdf& measured = *plugins::findBrdf("measured");
+    const std::string guard = std::string("#ifdef ") + kBrdfTableBindingDefine + "\n";
+    EXPECT_NE(glsl.find(guard + "#include \"" + measured.gpuTwin().snippet + "\""), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find(guard + "    if (plugin == " + std::to_string(gpuBrdfType(measured)) + "u) return " +
+                        measured.gpuTwin().evalFn + "("),
+              std::string::npos)
+        << glsl;
+    const std::string kernel = "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
+                               "#include \"common/brdf.glsl\"\nlayout(local_size_x = 1) in;\n"
+                               "layout(std430, binding = 0) buffer Out { vec4 o[]; };\n"
+                               "void main() { o[0].xyz = brdfEval(" + std::to_string(gpuBrdfType(measured)) +
+                               "u, vec3(1.0), 0.0, vec3(0, 0, 1), vec3(0, 0, 1)); }\n";
+    vk::ShaderCompileOptions withTables = includeDirs();
+    withTables.defines.push_back(std::string(kBrdfTableBindingDefine) + "=1");
+    auto bound = compileWithBrdfDispatch(kernel, "tables.comp", withTables);
+    EXPECT_TRUE(bound.ok()) << bound.error().message();
+    auto unbound = compileWithBrdfDispatch(kernel, "no_tables.comp", includeDirs());
+    EXPECT_TRUE(unbound.ok()) << unbound.error().message();
+}
+
 // A type parameter rides above the plugin index in steps of 1/4096, exact in the float the
 // material buffer stores it in; the plugin rounds the value the same way.
 TEST(BrdfShaderSource, TypeParameterPacksAboveThePluginIndex) {

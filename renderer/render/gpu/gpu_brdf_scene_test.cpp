@@ -5,7 +5,9 @@
 // (its own seed) per 8 x 8 block: none outside 4 standard errors (as gpu_sampler_unbiased_test).
 // The standard error of a block mean comes from the spread of its per-pass means. A GLSL twin
 // that differs from its C++ plugin in f or pdf, or a type parameter decoded wrongly, shows as an
-// offset. Also: zero validation messages, no NaN/Inf, and a plugin without a twin is refused.
+// offset. `measured` renders the shipped example table (resources/brdfs/), read by the twin
+// from the tables buffer the path tracer binds. Also: zero validation messages, no NaN/Inf.
+#include "plugins/brdf_table.h"
 #include "render/testing/block_statistics.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/session/integrator_factory.h"
@@ -40,7 +42,17 @@ struct Config {
 // block; the near-mirror and grazing settings are checked per direction (brdf_test.cpp,
 // gpu_brdf_twin_test.cpp).
 const Config kConfigs[] = {{"glossy", 0.3f, 0.0f}, {"phong", 0.3f, 0.0f}, {"blinn", 0.3f, 0.0f},
-                           {"ward", 0.3f, 0.0f},   {"ward", 0.4f, 0.9f}};
+                           {"ward", 0.3f, 0.0f},   {"ward", 0.4f, 0.9f},  {"measured", 0.5f, 0.0f}};
+
+// The shipped example table (glossy r = 0.5, 24 x 64 x 32 bins), loaded once.
+std::shared_ptr<const plugins::BrdfTable> exampleTable() {
+    static const std::shared_ptr<const plugins::BrdfTable> kTable = [] {
+        auto t = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) + "/brdfs/glossy-copper-r05.binary");
+        EXPECT_TRUE(t.ok()) << (t.ok() ? "" : t.error().message());
+        return t.ok() ? *t : nullptr;
+    }();
+    return kTable;
+}
 
 // A 32 x 16 equirect sky: a horizontal colour ramp, bright above a dim ground.
 std::shared_ptr<util::ImageRGB> rampSky() {
@@ -59,6 +71,10 @@ std::shared_ptr<const scene::Scene> makeScene(const Config& c) {
     m.baseColor = glm::vec3(0.9f, 0.7f, 0.5f);
     m.roughness = c.roughness;
     m.anisotropy = c.anisotropy;
+    if (std::string(c.brdf) == "measured") {
+        m.brdfFile = "brdfs/glossy-copper-r05.binary";
+        m.brdfTable = exampleTable();
+    }
     auto s = makeFurnaceScene(m, glm::vec3(1.0f), 48, 24);
     s->lighting.environment.image = rampSky();
     s->lighting.environment.rotationDeg = 30.0f;
@@ -164,22 +180,6 @@ TEST(GpuBrdfScene, EveryTwinMatchesTheCpuReferencePerBlock) {
         }
         EXPECT_EQ(gpu->validationMessageCount(), 0) << samplerKindName(kind);
     }
-}
-
-// `measured` has no GLSL twin (its table has no buffer on the device): the GPU tracer refuses its
-// material by name, and the CPU tracer renders it.
-TEST(GpuBrdfScene, MeasuredMaterialIsRefusedByTheGpuTracerByName) {
-    scene::Material m;
-    m.id = 1;
-    m.name = "scanned velvet";
-    m.brdf = "measured";
-    auto scene = makeFurnaceScene(m, glm::vec3(1.0f), 8, 4);
-    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    auto gpu = createGpuPathTracer(scene, bvh, options(SamplerKind::Mis, DeviceChoice::Vulkan, 1));
-    ASSERT_FALSE(gpu.ok());
-    EXPECT_EQ(gpu.error().kind, util::ErrorKind::Unsupported);
-    EXPECT_NE(gpu.error().message().find("scanned velvet"), std::string::npos) << gpu.error().message();
-    EXPECT_NE(gpu.error().message().find("measured"), std::string::npos) << gpu.error().message();
 }
 
 } // namespace

@@ -90,14 +90,17 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         compile.defines.push_back("WAVELIT_GROUP_LAYERS_BINDING=" +
                                   std::to_string(pt->m_groupBinding + 1));
     }
+    // Measured BRDF tables: the binding after the last (gpu_path_tracer_impl.h).
+    pt->m_brdfTableBinding = pt->m_groupBinding + (options.lightGroups ? 2u : 0u);
+    compile.defines.push_back(std::string(kBrdfTableBindingDefine) + "=" +
+                              std::to_string(pt->m_brdfTableBinding));
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     auto spirv = compileFileWithBrdfDispatch(shaderPath, compile);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->m_groupBinding + (options.lightGroups ? 2 : 0),
-                                      BindingKind::StorageBuffer);
+    std::vector<BindingKind> bindings(pt->m_brdfTableBinding + 1, BindingKind::StorageBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;
     auto kernel = vk::ComputeKernel::create(

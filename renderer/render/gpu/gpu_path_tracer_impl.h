@@ -49,6 +49,8 @@ enum Binding : uint32_t {
 // follow the last of the list above (7 and 8 for `bsdf`, 10 and 11 with samplers): the group info
 // (this packing) and the layers. kNoLightGroup: no emissive material.
 inline constexpr uint32_t kNoLightGroup = 0xFFFFFFFFu;
+// The measured BRDF tables (gpu_brdf_tables.h, plugins/measured.glsl) take the binding after
+// all of these (after the light groups' when they are on).
 std::vector<uint32_t> packGpuLightGroups(const LightGroups& groups, uint64_t pixels);
 
 // path_tracer.comp's push constant: what its PathSampler needs besides the pixel.
@@ -107,6 +109,9 @@ private:
     // With light groups: (re)creates the info and layer buffers for `scene`'s groups (sizes
     // already checked by uploadScene) and writes the info; a new layer buffer starts at zero.
     util::Status uploadLightGroups(const scene::Scene& scene);
+    // Writes the packed measured BRDF tables (GpuSceneData::brdfTables), creating the buffer
+    // when its size changed (gpu_path_tracer_brdf_tables.cpp).
+    util::Status uploadBrdfTables(const std::vector<float>& tables);
     // Checks the accumulation buffer and `buffers` against the device's limits before any of
     // them is allocated (render_limits.h).
     util::Status checkPlan(std::vector<GpuBufferPlan> buffers) const;
@@ -140,6 +145,9 @@ private:
     // LightMix layers (RenderOptions::lightGroups only; gpu_path_tracer_groups.cpp).
     vk::Buffer m_groupInfo, m_groupLayers;
     uint32_t m_groupBinding = 0; // the info's binding; the layers' is the next
+    // Measured BRDF tables: always bound (the dispatch reads them for `measured` materials).
+    vk::Buffer m_brdfTables;
+    uint32_t m_brdfTableBinding = 0;
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;

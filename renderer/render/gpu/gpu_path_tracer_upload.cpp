@@ -166,6 +166,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (m_options.lightGroups)
             plans.push_back(gpuLightGroupPlan(lightGroupsOf(scene).size(), m_options.width,
                                               m_options.height));
+        plans.push_back({"measured BRDF tables", d.brdfTables.size() * sizeof(float),
+                         d.brdfTables.size(), "floats", "the scene's measured BRDF files",
+                         "use fewer or smaller measured BRDF files"});
         if (auto fits = checkPlan(std::move(plans)); !fits)
             return fits.error();
     }
@@ -187,6 +190,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     }
     if (m_options.lightGroups)
         if (auto groups = uploadLightGroups(scene); !groups) return groups;
+    if (mask.materials || m_brdfTables.handle() == VK_NULL_HANDLE)
+        if (auto tables = uploadBrdfTables(d.brdfTables); !tables) return tables;
     for (auto& [i, buffer] : fresh) {
         *uploads[i].target = std::move(buffer);
         m_kernel.bind(uploads[i].binding, *uploads[i].target);

@@ -20,7 +20,8 @@ void set4(float* dst, const glm::vec3& v, float w) {
     dst[3] = w;
 }
 
-util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
+util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index,
+                                       const GpuBrdfTables& tables) {
     GpuMaterial g{};
     const plugins::Brdf* brdf = plugins::findBrdf(m.brdf);
     if (!brdf || !plugins::brdfGpuTwinProblem(*brdf).empty())
@@ -30,7 +31,11 @@ util::Result<GpuMaterial> packMaterial(const scene::Material& m, size_t index) {
                                    "the CPU tracer can",
                                "/materials/" + std::to_string(index) + "/brdf");
     const uint32_t type = gpuBrdfType(*brdf, scene::brdfParamsOf(m));
-    set4(g.baseColorRoughness, m.baseColor, m.roughness);
+    // A plugin that reads a table (`measured`, no roughness) gets its table's offset in the
+    // roughness slot (gpu_brdf_tables.h); packGpuBrdfTables has seen every material's table.
+    const float roughnessSlot =
+        plugins::brdfReadsFile(*brdf) ? float(tables.offsetOf.at(m.brdfTable.get())) : m.roughness;
+    set4(g.baseColorRoughness, m.baseColor, roughnessSlot);
     set4(g.emissionType, m.emission, float(type));
     return g;
 }
@@ -72,9 +77,12 @@ GpuLight packGpuLight(const scene::Light& light) {
 util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::Bvh& bvh,
                                         const RenderOptions& options, bool packEnvTexels) {
     GpuSceneData d;
+    auto tables = packGpuBrdfTables(scene);
+    if (!tables)
+        return tables.error();
     for (size_t i = 0; i <= scene.materials.size(); ++i) {
-        auto m =
-            packMaterial(i < scene.materials.size() ? scene.materials[i] : scene::Material{}, i);
+        auto m = packMaterial(i < scene.materials.size() ? scene.materials[i] : scene::Material{}, i,
+                              *tables);
         if (!m)
             return m.error();
         d.materials.push_back(*m);
@@ -120,6 +128,7 @@ util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::
     p.envSize[3] = uint32_t(d.lights.size());
     // As LightSet: 1.0f / float(n), computed here so the shader needs no division.
     p.lightInfo[0] = d.lights.empty() ? 0.0f : 1.0f / float(d.lights.size());
+    d.brdfTables = std::move(tables->floats);
     return d;
 }
 

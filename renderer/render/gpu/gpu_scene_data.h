@@ -5,6 +5,7 @@
 #pragma once
 
 #include "plugins/brdf.h"
+#include "render/gpu/gpu_brdf_tables.h"
 #include "render/session/render_options.h"
 #include "scene/bvh.h"
 #include "scene/scene.h"
@@ -75,6 +76,7 @@ struct GpuSceneData {
     std::vector<GpuMaterial> materials;
     std::vector<float> envTexels; // RGB per texel, row-major, row 0 = top (v = 0)
     std::vector<GpuLight> lights; // scene.lighting.lights in order
+    std::vector<float> brdfTables; // the measured BRDF tables (gpu_brdf_tables.h), never empty
 };
 
 // Errors: a material whose BRDF has no GLSL twin (Unsupported, naming the material).
