@@ -9,6 +9,8 @@
 #include <QDir>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <functional>
+
 namespace wavelit::editor {
 
 struct SceneDocument::LoadResult {
@@ -218,6 +220,43 @@ void SceneDocument::commit(const PropertyEdit& edit) {
         emit displayChanged(m_scene);
     else
         emit sceneEdited(m_scene, applied->changes);
+}
+
+namespace {
+
+// One applyChanges step: redo applies the change set, undo its inverse.
+class ChangeSetCommand : public QUndoCommand {
+public:
+    ChangeSetCommand(scene::ChangeSet changes, std::function<void(const scene::ChangeSet&)> commit, const QString& text)
+        : m_changes(std::move(changes)), m_commit(std::move(commit)) {
+        setText(text);
+    }
+    void redo() override { m_commit(m_changes); }
+    void undo() override { m_commit(m_changes.inverted()); }
+
+private:
+    scene::ChangeSet m_changes;
+    std::function<void(const scene::ChangeSet&)> m_commit;
+};
+
+} // namespace
+
+util::Status SceneDocument::applyChanges(const scene::ChangeSet& changes, const QString& text) {
+    if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
+    scene::Scene trial = *m_scene;
+    if (auto status = changes.apply(trial); !status) return status;
+    m_undo->push(new ChangeSetCommand(changes, [this](const scene::ChangeSet& c) { commitChanges(c); }, text));
+    return util::okStatus();
+}
+
+void SceneDocument::commitChanges(const scene::ChangeSet& changes) {
+    auto next = std::make_shared<scene::Scene>(*m_scene);
+    if (auto status = changes.apply(*next); !status) {
+        emit editFailed(QString::fromStdString(status.error().message()));
+        return;
+    }
+    m_scene = std::move(next);
+    emit sceneEdited(m_scene, changes);
 }
 
 util::Status SceneDocument::setExposure(float ev) {

@@ -66,6 +66,9 @@ public:
     // LightMix solo (docs/lightmix.md): mutes every other light and unmutes `light`, as one undo
     // step (the environment is left as it is). Error: no scene, or not a light of it.
     util::Status solo(scene::EntityId light);
+    // LightMix "Extract sun" (issue 21): a change set that adds or removes entities as well as
+    // setting properties, checked on a copy of the scene and pushed as one undo step `text`.
+    util::Status applyChanges(const scene::ChangeSet& changes, const QString& text);
     QUndoStack* undoStack() const { return m_undo; }
     // The camera's display exposure in EV: a Display edit (never restarts the render).
     util::Status setExposure(float ev);
@@ -91,6 +94,7 @@ private:
     void onLoaded();
     void onSaved();
     void commit(const PropertyEdit& edit); // applies without undo bookkeeping (commands call it)
+    void commitChanges(const scene::ChangeSet& changes); // the same for applyChanges' steps
     void startSave(SavePlan plan);
 
     std::shared_ptr<const scene::Scene> m_scene;
