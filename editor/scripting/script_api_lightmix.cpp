@@ -60,7 +60,10 @@ bool AppApi::compare(const QString& a, const QString& b) {
         const QString& name = names[i];
         if (name == "current") {
             sides[i] = {name, document->scene()->lighting};
-            sides[i].live = [document] { return document->scene()->lighting; };
+            const scene::LightingSetup atStart = sides[i].lighting;
+            sides[i].live = [document, atStart] {
+                return document->scene() ? document->scene()->lighting : atStart;
+            };
         } else if (auto snap = view->snapshotNamed(name)) {
             sides[i] = {name, *snap};
         } else if (name.endsWith(".wllight")) {

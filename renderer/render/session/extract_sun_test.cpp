@@ -171,37 +171,55 @@ double meanLuminance(const util::ImageRGB& img) {
     return sum / double(img.pixels.size());
 }
 
-util::ImageRGB renderCpu(const scene::Scene& scene, uint64_t seed) {
+util::ImageRGB renderImage(const scene::Scene& scene, uint64_t seed, DeviceChoice device, int passes) {
     RenderOptions o;
     o.width = 48;
     o.height = 36;
     o.bounces = 3;
     o.seed = seed;
     o.sampler = SamplerKind::Mis;
-    o.device = DeviceChoice::Cpu;
+    o.device = device;
+    o.validation = device == DeviceChoice::Vulkan;
     auto session = RenderSession::create(scene, o);
     EXPECT_TRUE(session.ok()) << session.error().message();
     if (!session.ok()) return {};
-    for (int pass = 0; pass < 64; ++pass) EXPECT_TRUE((*session)->renderPass().ok());
+    for (int pass = 0; pass < passes; ++pass) EXPECT_TRUE((*session)->renderPass().ok());
+    if (device == DeviceChoice::Vulkan) EXPECT_EQ((*session)->stats().validationMessages, 0);
     return *(*session)->image();
 }
 
+// Median 4x4-block error <= 2x the seed-to-seed figure, means within 3%.
+void expectSameWithinNoise(const scene::Scene& before, const scene::Scene& after, DeviceChoice device, int passes,
+                           const char* what) {
+    const util::ImageRGB b1 = renderImage(before, 1, device, passes), b2 = renderImage(before, 2, device, passes);
+    const util::ImageRGB a1 = renderImage(after, 3, device, passes), a2 = renderImage(after, 4, device, passes);
+    ASSERT_FALSE(b1.empty() || b2.empty() || a1.empty() || a2.empty());
+    const double seedToSeed = std::max(medianBlockError(b1, b2), medianBlockError(a1, a2));
+    const double error = medianBlockError(b1, a1);
+    const double mb = meanLuminance(b1), ma = meanLuminance(a1);
+    std::printf("%s: median 4x4-block error %.5f, seed-to-seed %.5f (before %.5f, after %.5f); means %.5f before, "
+                "%.5f after (%+.2f%%)\n",
+                what, error, seedToSeed, medianBlockError(b1, b2), medianBlockError(a1, a2), mb, ma,
+                100.0 * (ma - mb) / mb);
+    EXPECT_LE(error, 2.0 * seedToSeed) << what;
+    EXPECT_GT(mb, 0.0) << what;
+    EXPECT_NEAR(ma, mb, 0.03 * mb) << what;
+}
+
 // The acceptance test: the converged image after "Extract sun" matches the one before within
-// noise (median 4x4-block error <= 2x the seed-to-seed figure, means within 3%).
+// noise, on the CPU reference tracer and on the Vulkan tracer (both read the masked map).
 TEST(ExtractSun, ImageStaysTheSameWithinNoise) {
     const scene::Scene before = groundSceneUnder("courtyard", 30.0f);
     auto extracted = extractSun(before, "test.wlscene");
     ASSERT_TRUE(extracted.ok()) << extracted.error().message();
-    const util::ImageRGB b1 = renderCpu(before, 1), b2 = renderCpu(before, 2);
-    const util::ImageRGB a1 = renderCpu(extracted->scene, 3), a2 = renderCpu(extracted->scene, 4);
-    const double seedToSeed = std::max(medianBlockError(b1, b2), medianBlockError(a1, a2));
-    const double error = medianBlockError(b1, a1);
-    const double mb = meanLuminance(b1), ma = meanLuminance(a1);
-    std::printf("extract sun: median 4x4-block error %.5f, seed-to-seed %.5f (before %.5f, after %.5f); means %.5f before, %.5f after\n",
-                error, seedToSeed, medianBlockError(b1, b2), medianBlockError(a1, a2), mb, ma);
-    EXPECT_LE(error, 2.0 * seedToSeed);
-    EXPECT_GT(mb, 0.0);
-    EXPECT_NEAR(ma, mb, 0.03 * mb);
+    expectSameWithinNoise(before, extracted->scene, DeviceChoice::Cpu, 64, "extract sun, CPU");
+}
+
+TEST(ExtractSun, ImageStaysTheSameWithinNoiseOnVulkan) {
+    const scene::Scene before = groundSceneUnder("courtyard", 30.0f);
+    auto extracted = extractSun(before, "test.wlscene");
+    ASSERT_TRUE(extracted.ok()) << extracted.error().message();
+    expectSameWithinNoise(before, extracted->scene, DeviceChoice::Vulkan, 32, "extract sun, Vulkan");
 }
 
 } // namespace
