@@ -24,16 +24,16 @@ mix warm_interior window=0.25,lamp=4,spot=0.5,environment=0.5
 mix solo_lamp window=0,spot=0,environment=0
 mix blue_spot spot=0.3:0.6:2.5,window=0.5
 
-# Extract sun (docs/lightmix.md "Extract sun"): the glossy sphere under the courtyard map alone,
+# Extract sun (docs/lightmix.md "Extract sun"): the glossy sphere under the city map alone,
 # before and after `extract-sun`, and with the extracted sun moved (the map keeps its mask).
-cat >resources/lighting/.lightmix_courtyard.wllight <<'JSON'
-{ "format": "wavelit-lighting", "version": 1, "name": "courtyard only",
-  "environment": { "map": "../envmaps/courtyard.exr", "rotation": 30.0, "intensity": 1.0 },
+cat >resources/lighting/.lightmix_city.wllight <<'JSON'
+{ "format": "wavelit-lighting", "version": 1, "name": "city only",
+  "environment": { "map": "../envmaps/city.exr", "rotation": 30.0, "intensity": 1.0 },
   "lights": [] }
 JSON
 trap 'rm -f resources/scenes/.lightmix_night.wlscene resources/scenes/.lightmix_sun_*.wlscene \
-    resources/lighting/.lightmix_courtyard.wllight resources/lighting/.lightmix_extracted*.wllight' EXIT
-"$cli" extract-sun resources/lighting/.lightmix_courtyard.wllight -o resources/lighting/.lightmix_extracted.wllight
+    resources/lighting/.lightmix_city.wllight resources/lighting/.lightmix_extracted*.wllight' EXIT
+"$cli" extract-sun resources/lighting/.lightmix_city.wllight -o resources/lighting/.lightmix_extracted.wllight
 python3 - <<'PY'
 import json
 p = "resources/lighting/.lightmix_extracted.wllight"
@@ -42,7 +42,7 @@ sun = setup["lights"][-1]
 sun["direction"] = [0.55, -0.45, 0.7]  # the extracted sun, moved to the other side
 json.dump(setup, open(p.replace(".wllight", "_moved.wllight"), "w"), indent=2)
 PY
-for setup in courtyard extracted extracted_moved; do
+for setup in city extracted extracted_moved; do
     sed "s#../lighting/sun_sky.wllight#../lighting/.lightmix_$setup.wllight#" resources/scenes/glossy_sphere.wlscene \
         >resources/scenes/.lightmix_sun_$setup.wlscene
     "$cli" render resources/scenes/.lightmix_sun_$setup.wlscene -o "$img/lightmix_sun_$setup.png" \

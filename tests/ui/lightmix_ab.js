@@ -4,7 +4,7 @@
 // courtyard map and one `sun` light): remix, mute, solo and undo keep the render's samples;
 // snapshots and the A/B split view remix the same layers with each side's weights (checked by
 // linearity: the sun's share scales exactly with its intensity); Extract sun adds a light and a
-// mask as one undo step.
+// mask as one undo step (on the city map: courtyard has no compact sun).
 function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 var res = app.environment("WAVELIT_UI_RESOURCES");
@@ -64,7 +64,13 @@ check(refused, "compare of a moved sun was not refused");
 app.triggerAction("actionUndo");
 app.endCompare();
 
-// Extract sun: a new `sun2` light and a mask, one undo step.
+// Extract sun: courtyard's bright sky has no compact sun (refused with a message); under the
+// city map a new `sun2` light and a mask arrive as one undo step.
+var noSun = "";
+try { app.extractSun(); } catch (e) { noSun = String(e); }
+console.log("courtyard: " + noSun);
+check(noSun.indexOf("no compact sun") >= 0, "extractSun on courtyard did not say why: " + noSun);
+app.setProperty("environment", "map", "../envmaps/city.exr");
 spp = app.waitForSamples(1, 300);
 var name = app.extractSun();
 check(name == "sun2", "extractSun returned " + name);
@@ -74,5 +80,6 @@ check(app.entities().join(",").indexOf("sun2") >= 0, "sun2 not in the outline: "
 check(app.waitForSamples(2, 300) >= 2, "no render after extractSun");
 app.triggerAction("actionUndo");
 check(app.getProperty("environment", "maskRadius") == 0, "undo kept the mask");
+check(app.getProperty("environment", "map") == "../envmaps/city.exr", "undo went past the extraction");
 check(app.entities().join(",").indexOf("sun2") < 0, "undo kept sun2");
 app.quit(0);
