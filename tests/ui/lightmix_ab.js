@@ -38,6 +38,7 @@ remix("mute sun for a snapshot");
 app.snapshot("dark");
 app.triggerAction("actionUndo");
 check(app.getProperty("light:sun", "muted") === false, "undo of the snapshot's mute");
+remix("undo the snapshot's mute"); // compare() composes from the latest frame
 
 // A/B: each side a remix of the same layers, so sun-only differences are exactly linear.
 check(app.compare("bright", "dim"), "compare bright/dim");
