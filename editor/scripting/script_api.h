@@ -66,7 +66,7 @@ public:
     Q_INVOKABLE bool setMute(const QString& light, bool muted);
     Q_INVOKABLE bool solo(const QString& light);
     Q_INVOKABLE QString frameStatus() const;
-    // LightMix (issue 21; docs/lightmix.md, script_api_lightmix.cpp).
+    // LightMix (issue 21): Extract sun and A/B (docs/lightmix.md, script_api_lightmix.cpp).
     // extractSun: the environment's sun becomes a `sun` light and the map gets a mask, one undo
     // step; returns the new light's name (throws when the map has no sun).
     // snapshot: stores the current lighting under `name`. compare(a, b): the A/B split view, each
