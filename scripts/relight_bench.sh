@@ -4,11 +4,13 @@
 #  2. preview resolution: relRMSE of 128^2 output from 128^2 / 64^2 / 32^2 preview points against
 #     a converged direct-lighting reference (CPU tracer, bounces 1, REF_SPP spp);
 #  3. coefficient budget: relRMSE vs K on the same reference.
+# Latency runs also take the coarse-to-fine first answer (--coarse-level 3: the 8^2 grid) and
+# report its cost next to the full one's; the quality runs report its relRMSE (coarseRelRMSE).
 # Timings vary with the machine and its load (the report says so); run it on a quiet machine.
-#   bash scripts/relight_bench.sh [CLI] [REF_SPP]   (defaults: build/rel/.../wavelit-cli, 512)
+#   bash scripts/relight_bench.sh [CLI] [REF_SPP]   (defaults: build/release/renderer/cli/wavelit-cli, 512)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cli=${1:-build/rel/renderer/cli/wavelit-cli}
+cli=${1:-build/release/renderer/cli/wavelit-cli}
 spp=${2:-512}
 out=out/relight
 mkdir -p "$out"
@@ -20,6 +22,7 @@ edits() { # scene name -> an edits file with every edit kind that scene has
  {"entity": "light:softbox", "property": "position", "value": [0.5, 3.0, 2.0]},
  {"entity": "light:softbox", "property": "intensity", "value": 90},
  {"entity": "material:ground", "property": "baseColor", "value": [0.3, 0.5, 0.7]},
+ {"entity": "material:gold", "property": "baseColor", "value": [0.9, 0.6, 0.3]},
  {"entity": "material:gold", "property": "roughness", "value": 0.4},
  {"entity": "object:ring", "property": "translation", "value": [0.3, 0.12, 0.0]}]
 JSON
@@ -45,14 +48,15 @@ for s in "${scenes[@]}"; do
     edits "$s" > "$out/$s.edits.json"
     echo "relight bench: $s latency (256^2 preview)"
     nice -n 10 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-latency" \
-        --report "$out/$s-latency.json" --preview 256 --width 256 --height 256 --threads 2 >/dev/null
+        --report "$out/$s-latency.json" --preview 256 --width 256 --height 256 --threads 2 --coarse-level 3 >/dev/null
 done
 echo '[{"entity": "environment", "property": "intensity", "value": 1.0}]' > "$out/noop.edits.json"
 for s in "${scenes[@]}"; do
     for p in 128 64 32; do
         echo "relight bench: $s preview $p vs ${spp} spp"
         nice -n 10 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/noop.edits.json" --out "$out/$s-p$p" \
-            --report "$out/$s-p$p.json" --preview "$p" --width 128 --height 128 --reference-spp "$spp" --skip-full-rebuild >/dev/null
+            --report "$out/$s-p$p.json" --preview "$p" --width 128 --height 128 --reference-spp "$spp" --skip-full-rebuild \
+            --coarse-level 3 >/dev/null
     done
     for k in 16 64 256 1024; do
         echo "relight bench: $s K=$k vs ${spp} spp"
@@ -64,14 +68,15 @@ python3 - "$out" <<'PY'
 import json, sys
 out = sys.argv[1]
 scenes = ["ring_on_ground", "glossy_sphere", "cornell_box"]
-print("| scene | edit | kind | points touched | incremental ms (shared + per point) | image ms | from scratch ms | speed-up |")
-print("|---|---|---|---|---|---|---|---|")
+print("| scene | edit | kind | points touched | incremental ms (shared + per point) | image ms | from scratch ms | speed-up | coarse first answer ms (+ image) |")
+print("|---|---|---|---|---|---|---|---|---|")
 for s in scenes:
     r = json.load(open(f"{out}/{s}-latency.json"))
     for e in r["edits"]:
         print(f"| {s} | {e['entity']} {e['property']} | {e['kind']} | {e['pointsTouched']} | "
               f"{e['incrementalMs']:.1f} ({e['sharedFactorsMs']:.1f} + {e['perPointMs']:.1f}) | {e['imageMs']:.1f} | "
-              f"{e['fullRebuildMs']:.0f} | {e['fullRebuildMs'] / max(e['incrementalMs'], 1e-3):.0f}x |")
+              f"{e['fullRebuildMs']:.0f} | {e['fullRebuildMs'] / max(e['incrementalMs'], 1e-3):.0f}x | "
+              f"{e.get('coarseMs', float('nan')):.1f} (+ {e.get('coarseImageMs', float('nan')):.1f}) |")
 print()
 print("| scene | points (256^2) | build ms | bytes per point |")
 print("|---|---|---|---|")
@@ -79,12 +84,12 @@ for s in scenes:
     p = json.load(open(f"{out}/{s}-latency.json"))["preview"]
     print(f"| {s} | {p['points']} | {p['buildMs']:.0f} | {p['bytesPerPoint']:.0f} |")
 print()
-print("| scene | relRMSE, preview 128^2 | 64^2 | 32^2 | build ms 128^2 / 64^2 / 32^2 |")
-print("|---|---|---|---|---|")
+print("| scene | relRMSE, preview 128^2 | 64^2 | 32^2 | build ms 128^2 / 64^2 / 32^2 | coarse (8^2 grid) first answer, 128^2 |")
+print("|---|---|---|---|---|---|")
 for s in scenes:
     rs = [json.load(open(f"{out}/{s}-p{p}.json")) for p in (128, 64, 32)]
     print(f"| {s} | " + " | ".join(f"{r['edits'][0]['relRMSE']:.3f}" for r in rs) + " | " +
-          " / ".join(f"{r['preview']['buildMs']:.0f}" for r in rs) + " |")
+          " / ".join(f"{r['preview']['buildMs']:.0f}" for r in rs) + f" | {rs[0]['edits'][0].get('coarseRelRMSE', float('nan')):.3f} |")
 print()
 print("| scene | K = 16 | 64 | 128 | 256 | 1024 (all) |")
 print("|---|---|---|---|---|---|")

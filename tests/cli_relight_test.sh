@@ -40,6 +40,15 @@ echo '[{"entity": "environment", "property": "intensity", "value": 1.5}]' > "$tm
 expect 0 -- relight "$scene" --edits "$tmp/one.json" --out "$tmp/ref" --report "$tmp/ref.json" "${small[@]}" --reference-spp 2
 grep -qE '"relRMSE": [0-9]' "$tmp/ref.json" || fail "relRMSE not a number: $(cat "$tmp/ref.json")"
 
+# Coarse-to-fine: --coarse-level writes the first answer per edit and reports its cost and error.
+expect 0 -- relight "$scene" --edits "$tmp/one.json" --out "$tmp/coarse" --report "$tmp/coarse.json" "${small[@]}" \
+    --coarse-level 2 --reference-spp 2
+[ -s "$tmp/coarse/edit_0_coarse.exr" ] || fail "edit_0_coarse.exr not written"
+for key in '"coarse": {' '"coarseMs"' '"coarseImageMs"' '"coarseRelRMSE"'; do
+    grep -qF "$key" "$tmp/coarse.json" || fail "coarse report lacks $key: $(cat "$tmp/coarse.json")"
+done
+expect 2 "--coarse-level" -- relight "$scene" --edits "$tmp/one.json" --out "$tmp/x" --report "$tmp/x.json" --coarse-level 9
+
 # Bad input: exit 1, the message names the file and the problem.
 echo '[{"entity": "lamp", "property": "intensity", "value": 1}]' > "$tmp/entity.json"
 expect 1 "entity.json" "no entity named 'lamp'" -- relight "$scene" --edits "$tmp/entity.json" --out "$tmp/x" --report "$tmp/x.json" "${small[@]}"

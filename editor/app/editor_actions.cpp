@@ -19,14 +19,14 @@ const QString kSceneFilter = QObject::tr("Wavelit scenes (*.wlscene);;All files 
 EditorActions::EditorActions(QMainWindow* window, SceneDocument* document, ErrorReporter* errors)
     : QObject(window), m_window(window), m_document(document),
       m_prompt(new UnsavedChangesPrompt(window, document, errors, [this] { return save(); })) {
-    QMenu* file = window->menuBar()->addMenu(tr("&File"));
+    QMenu* file = m_fileMenu = window->menuBar()->addMenu(tr("&File"));
     file->addAction(add("actionOpenScene", tr("&Open scene…"), QKeySequence::Open));
     file->addAction(add("actionSaveScene", tr("&Save scene"), QKeySequence::Save));
     file->addAction(add("actionSaveSceneAs", tr("Save scene &as…"), QKeySequence::SaveAs));
     file->addSeparator();
     file->addAction(add("actionQuit", tr("&Quit"), QKeySequence::Quit));
 
-    QMenu* edit = window->menuBar()->addMenu(tr("&Edit"));
+    QMenu* edit = m_editMenu = window->menuBar()->addMenu(tr("&Edit"));
     // The undo stack names each step: "Undo sun intensity".
     QAction* undo = document->undoStack()->createUndoAction(window, tr("&Undo"));
     undo->setObjectName("actionUndo");

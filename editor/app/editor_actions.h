@@ -13,6 +13,7 @@
 
 class QAction;
 class QMainWindow;
+class QMenu;
 
 namespace wavelit::editor {
 
@@ -30,6 +31,9 @@ public:
 
     QAction* action(const QString& objectName) const;
     UnsavedChangesPrompt* prompt() const { return m_prompt; }
+    // The menus, for the parts that add their own actions (file_actions.h, outline_actions.h).
+    QMenu* fileMenu() const { return m_fileMenu; }
+    QMenu* editMenu() const { return m_editMenu; }
 
     // Save: to the document's file, or through Save As when it has none. False when no save
     // started (the user cancelled a dialog).
@@ -46,6 +50,8 @@ private:
     QMainWindow* m_window;
     SceneDocument* m_document;
     UnsavedChangesPrompt* m_prompt;
+    QMenu* m_fileMenu = nullptr;
+    QMenu* m_editMenu = nullptr;
 };
 
 } // namespace wavelit::editor

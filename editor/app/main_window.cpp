@@ -4,7 +4,9 @@
 #include "app/editor_actions.h"
 #include "app/error_reporter.h"
 #include "app/extract_sun_edit.h"
+#include "app/file_actions.h"
 #include "app/lightmix_compare.h"
+#include "app/outline_actions.h"
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
 #include "panels/outline_panel.h"
@@ -54,6 +56,9 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     wireDocument();
     wireRendering();
     wireViewportHandlers();
+    m_files = new FileActions(this);            // New, recent, lighting setups, render to file, drops
+    m_outlineActions = new OutlineActions(this); // add, delete, duplicate, rename
+    m_status->setSampler(render::samplerKindName(renderSettings.sampler));
     wireLightMix();
 }
 

@@ -13,6 +13,8 @@ namespace wavelit::editor {
 class AutosaveController;
 class CameraOrbitHandler;
 class EditorActions;
+class FileActions;
+class OutlineActions;
 class ErrorReporter;
 class OutlinePanel;
 class PropertyPanel;
@@ -39,6 +41,10 @@ public:
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
     AutosaveController* autosave() const { return m_autosave; }
+    // Files, outline and panels (issue 14): file_actions.h, outline_actions.h.
+    FileActions* files() const { return m_files; }
+    OutlineActions* outlineActions() const { return m_outlineActions; }
+    RenderStatusLabel* statusLabel() const { return m_status; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -63,6 +69,8 @@ private:
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;
     AutosaveController* m_autosave;
+    FileActions* m_files = nullptr;
+    OutlineActions* m_outlineActions = nullptr;
     bool m_closeApproved = false;
 };
 

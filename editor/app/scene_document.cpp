@@ -1,6 +1,7 @@
 #include "app/scene_document.h"
 
 #include "commands/property_command.h"
+#include "commands/scene_edit_command.h"
 #include "panels/entity_ref.h"
 
 #include "scene/scene_compare.h"
@@ -8,8 +9,6 @@
 
 #include <QDir>
 #include <QtConcurrent/QtConcurrentRun>
-
-#include <functional>
 
 namespace wavelit::editor {
 
@@ -222,41 +221,60 @@ void SceneDocument::commit(const PropertyEdit& edit) {
         emit sceneEdited(m_scene, applied->changes);
 }
 
-namespace {
-
-// One applyChanges step: redo applies the change set, undo its inverse.
-class ChangeSetCommand : public QUndoCommand {
-public:
-    ChangeSetCommand(scene::ChangeSet changes, std::function<void(const scene::ChangeSet&)> commit, const QString& text)
-        : m_changes(std::move(changes)), m_commit(std::move(commit)) {
-        setText(text);
-    }
-    void redo() override { m_commit(m_changes); }
-    void undo() override { m_commit(m_changes.inverted()); }
-
-private:
-    scene::ChangeSet m_changes;
-    std::function<void(const scene::ChangeSet&)> m_commit;
-};
-
-} // namespace
-
 util::Status SceneDocument::applyChanges(const scene::ChangeSet& changes, const QString& text) {
     if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
-    scene::Scene trial = *m_scene;
-    if (auto status = changes.apply(trial); !status) return status;
-    m_undo->push(new ChangeSetCommand(changes, [this](const scene::ChangeSet& c) { commitChanges(c); }, text));
+    scene::Scene check = *m_scene; // refuse a set that does not apply before it reaches the stack
+    if (auto status = changes.apply(check); !status) return status;
+    m_undo->push(new SceneEditCommand(changes, [this](const scene::ChangeSet& c) { commitChanges(c); }, text));
     return util::okStatus();
 }
 
 void SceneDocument::commitChanges(const scene::ChangeSet& changes) {
-    auto next = std::make_shared<scene::Scene>(*m_scene);
-    if (auto status = changes.apply(*next); !status) {
+    auto edited = std::make_shared<scene::Scene>(*m_scene);
+    if (auto status = changes.apply(*edited); !status) {
         emit editFailed(QString::fromStdString(status.error().message()));
         return;
     }
-    m_scene = std::move(next);
+    m_scene = std::move(edited);
     emit sceneEdited(m_scene, changes);
+}
+
+LightingState SceneDocument::lightingState() const {
+    if (!m_scene) return {};
+    return {m_scene->lighting, m_scene->lightingPath, m_savedLighting};
+}
+
+util::Status SceneDocument::applyLighting(LightingState after, const QString& text) {
+    if (!m_scene) return util::makeError(util::ErrorKind::Invalid, "", "no scene is open");
+    m_undo->push(new LightingCommand(lightingState(), std::move(after),
+                                     [this](const LightingState& s) { commitLighting(s); }, text));
+    return util::okStatus();
+}
+
+void SceneDocument::commitLighting(const LightingState& state) {
+    // The render thread gets every light removed and the new ones added, and every environment
+    // property (the map among them: its texels are new even when the file name is not).
+    scene::ChangeSet changes;
+    for (const scene::Light& light : m_scene->lighting.lights)
+        (void)changes.removeEntity(*m_scene, {EntityKind::Light, light.id});
+    auto edited = std::make_shared<scene::Scene>(*m_scene);
+    edited->lighting = state.lighting;
+    edited->lightingPath = state.lightingPath;
+    for (size_t i = 0; i < state.lighting.lights.size(); ++i)
+        changes.add(scene::EntityEdit{true, i, state.lighting.lights[i]});
+    const EntityRef environment{EntityKind::Environment, scene::kInvalidId};
+    for (const scene::PropertyInfo& info : scene::properties(EntityKind::Environment))
+        changes.add(scene::PropertyEdit{environment, info.name, info.get(&m_scene->lighting.environment),
+                                        info.get(&edited->lighting.environment)});
+    m_scene = std::move(edited);
+    m_savedLighting = state.savedLighting;
+    emit sceneEdited(m_scene, changes);
+}
+
+void SceneDocument::newScene() {
+    auto empty = std::make_shared<scene::Scene>();
+    empty->name = "untitled";
+    setScene(std::move(empty), QString());
 }
 
 util::Status SceneDocument::setExposure(float ev) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "app/save_plan.h"
+#include "commands/lighting_command.h"
 #include "commands/property_edit.h"
 #include "scene/change_set.h"
 
@@ -66,9 +67,16 @@ public:
     // LightMix solo (docs/lightmix.md): mutes every other light and unmutes `light`, as one undo
     // step (the environment is left as it is). Error: no scene, or not a light of it.
     util::Status solo(scene::EntityId light);
-    // LightMix "Extract sun" (issue 21): a change set that adds or removes entities as well as
-    // setting properties, checked on a copy of the scene and pushed as one undo step `text`.
+    // Outline edits (issue 14, app/outline_edits.h): entities added, removed or duplicated, as ONE
+    // undo step named `text`. Error: no scene, or the set does not apply to it (nothing changes).
     util::Status applyChanges(const scene::ChangeSet& changes, const QString& text);
+    // Lighting setups (issue 14): replaces the scene's lighting — environment, lights and where
+    // the setup lives — as one undo step. Lights and the map reach the renderer as one change set.
+    util::Status applyLighting(LightingState after, const QString& text);
+    // The lighting as the document holds it (setup, file it refers to, that file's contents).
+    LightingState lightingState() const;
+    // File -> New: an empty scene without a file (a constant white environment, default camera).
+    void newScene();
     QUndoStack* undoStack() const { return m_undo; }
     // The camera's display exposure in EV: a Display edit (never restarts the render).
     util::Status setExposure(float ev);
@@ -94,7 +102,8 @@ private:
     void onLoaded();
     void onSaved();
     void commit(const PropertyEdit& edit); // applies without undo bookkeeping (commands call it)
-    void commitChanges(const scene::ChangeSet& changes); // the same for applyChanges' steps
+    void commitChanges(const scene::ChangeSet& changes); // SceneEditCommand's callback
+    void commitLighting(const LightingState& state);      // LightingCommand's callback
     void startSave(SavePlan plan);
 
     std::shared_ptr<const scene::Scene> m_scene;

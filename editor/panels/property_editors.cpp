@@ -2,7 +2,13 @@
 
 #include "panels/gesture_tracker.h"
 
+#include "panels/range_guard.h"
+
 #include <QCheckBox>
+#include <QColorDialog>
+#include <QDir>
+#include <QFileDialog>
+#include <QPushButton>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -10,6 +16,8 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +34,9 @@ constexpr int kDecimals = 3;
 double spinMin(const scene::PropertyInfo& info) { return std::max(info.min, -kSpinLimit); }
 double spinMax(const scene::PropertyInfo& info) { return std::min(info.max, kSpinLimit); }
 
-QDoubleSpinBox* makeSpin(const scene::PropertyInfo& info, QWidget* parent) {
-    auto* spin = new QDoubleSpinBox(parent);
+QDoubleSpinBox* makeSpin(const scene::PropertyInfo& info, QWidget* parent, const EditorContext& context) {
+    auto* spin = new TypedDoubleSpinBox(parent);
+    guardRange(spin, info, context.refuse);
     spin->setRange(spinMin(info), spinMax(info));
     spin->setDecimals(kDecimals);
     // A bounded range steps in hundredths of itself (roughness 0.01); an open one in 0.1.
@@ -54,9 +63,10 @@ bool wantsSlider(const scene::PropertyInfo& info) {
     return info.min > -1e29 && info.max < 1e29 && info.max - info.min <= kSliderMaxSpan;
 }
 
-PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent) {
+PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent,
+                           const EditorContext& context) {
     if (!wantsSlider(info)) {
-        auto* spin = makeSpin(info, parent);
+        auto* spin = makeSpin(info, parent, context);
         if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
         GestureTracker* gestures = trackGestures(spin, {spin});
         QObject::connect(spin, &QDoubleSpinBox::valueChanged, spin,
@@ -75,7 +85,7 @@ PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, 
     auto* slider = new QSlider(Qt::Horizontal, box);
     slider->setObjectName("slider");
     slider->setRange(0, kSliderSteps);
-    auto* spin = makeSpin(info, box);
+    auto* spin = makeSpin(info, box, context);
     spin->setObjectName("spin");
     if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
     layout->addWidget(slider, 1);
@@ -106,8 +116,10 @@ PropertyEditor floatEditor(const scene::PropertyInfo& info, CommitValue commit, 
             }};
 }
 
-PropertyEditor intEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent) {
-    auto* spin = new QSpinBox(parent);
+PropertyEditor intEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent,
+                         const EditorContext& context) {
+    auto* spin = new TypedSpinBox(parent);
+    guardRange(spin, info, context.refuse);
     spin->setRange(int(std::max(info.min, -kSpinLimit)), int(std::min(info.max, kSpinLimit)));
     spin->setKeyboardTracking(false);
     if (!info.unit.empty()) spin->setSuffix(" " + QString::fromStdString(info.unit));
@@ -124,7 +136,7 @@ PropertyEditor intEditor(const scene::PropertyInfo& info, CommitValue commit, QW
 
 // Vec2, Vec3 and Color: one spin box per component; any change commits the whole vector.
 PropertyEditor vectorEditor(const scene::PropertyInfo& info, int components, CommitValue commit,
-                            QWidget* parent) {
+                            QWidget* parent, const EditorContext& context) {
     auto* box = new QWidget(parent);
     auto* layout = new QHBoxLayout(box);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -132,7 +144,7 @@ PropertyEditor vectorEditor(const scene::PropertyInfo& info, int components, Com
     auto spins = std::make_shared<std::vector<QDoubleSpinBox*>>();
     auto* gestures = new GestureTracker(box);
     for (int i = 0; i < components; ++i) {
-        auto* spin = makeSpin(info, box);
+        auto* spin = makeSpin(info, box, context);
         spin->setObjectName(QStringLiteral("component%1").arg(i));
         layout->addWidget(spin);
         spins->push_back(spin);
@@ -221,22 +233,120 @@ PropertyEditor textEditor(CommitValue commit, QWidget* parent) {
             }};
 }
 
+// A colour: a swatch that opens QColorDialog; an HDR colour (no upper bound) also has an
+// intensity: value = swatch (components in [0, 1], the largest 1) x intensity.
+PropertyEditor colorEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent,
+                           const EditorContext& context) {
+    const bool hdr = info.max > 1.0;
+    auto* box = new QWidget(parent);
+    auto* layout = new QHBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    auto* swatch = new QPushButton(box);
+    swatch->setObjectName("swatch");
+    swatch->setMinimumWidth(48);
+    layout->addWidget(swatch, 1);
+    QDoubleSpinBox* intensity = nullptr;
+    if (hdr) {
+        scene::PropertyInfo range = info;
+        range.min = 0.0;
+        intensity = makeSpin(range, box, context);
+        intensity->setObjectName("intensity");
+        intensity->setPrefix(QObject::tr("× "));
+        intensity->setToolTip(QObject::tr("Intensity: the colour's largest component"));
+        layout->addWidget(intensity);
+    }
+    auto state = std::make_shared<glm::vec3>(0.0f); // the value shown
+    auto paint = [swatch, intensity, state, hdr] {
+        const float k = hdr ? std::max({state->r, state->g, state->b}) : 1.0f;
+        const glm::vec3 c = k > 0.0f ? glm::clamp(*state / k, 0.0f, 1.0f) : glm::vec3(0.0f);
+        const QColor color = QColor::fromRgbF(c.r, c.g, c.b);
+        swatch->setStyleSheet(QStringLiteral("background-color: %1").arg(color.name()));
+        swatch->setText(QStringLiteral("%1 %2 %3").arg(state->r, 0, 'g', 3).arg(state->g, 0, 'g', 3).arg(state->b, 0, 'g', 3));
+        if (intensity) {
+            const QSignalBlocker block(intensity);
+            intensity->setValue(k);
+        }
+    };
+    QObject::connect(swatch, &QPushButton::clicked, box, [box, state, commit, hdr, info] {
+        const float k = hdr ? std::max({state->r, state->g, state->b}) : 1.0f;
+        const glm::vec3 c = k > 0.0f ? glm::clamp(*state / k, 0.0f, 1.0f) : glm::vec3(1.0f);
+        const QColor picked = QColorDialog::getColor(QColor::fromRgbF(c.r, c.g, c.b), box,
+                                                     QString::fromStdString(info.label));
+        if (!picked.isValid()) return;
+        const float scale = hdr ? (k > 0.0f ? k : 1.0f) : 1.0f;
+        commit(glm::vec3(picked.redF(), picked.greenF(), picked.blueF()) * scale, kNoGesture);
+    });
+    if (intensity) {
+        GestureTracker* gestures = trackGestures(intensity, {intensity});
+        QObject::connect(intensity, &QDoubleSpinBox::valueChanged, box, [state, commit, gestures](double k) {
+            const float old = std::max({state->r, state->g, state->b});
+            const glm::vec3 c = old > 0.0f ? *state / old : glm::vec3(1.0f);
+            commit(c * float(k), gestures->current());
+        });
+    }
+    return {box, [state, paint](const scene::PropertyValue& v) {
+                if (auto* c = std::get_if<glm::vec3>(&v)) {
+                    *state = *c;
+                    paint();
+                }
+            }};
+}
+
+// A path: the text as the file stores it, and "…" to pick a file (made relative to the folder
+// the context names for the entity's kind).
+PropertyEditor pathEditor(const scene::PropertyInfo& info, CommitValue commit, QWidget* parent,
+                          const EditorContext& context) {
+    auto* box = new QWidget(parent);
+    auto* layout = new QHBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    auto* line = new QLineEdit(box);
+    line->setObjectName("path");
+    auto* browse = new QPushButton(QObject::tr("…"), box);
+    browse->setObjectName("browse");
+    browse->setToolTip(QObject::tr("Choose a file"));
+    layout->addWidget(line, 1);
+    layout->addWidget(browse);
+    QObject::connect(line, &QLineEdit::editingFinished, line, [line, commit] {
+        if (line->isModified()) commit(line->text().toStdString(), kNoGesture);
+        line->setModified(false);
+    });
+    const scene::EntityKind kind = info.entity;
+    auto folder = context.folder;
+    QObject::connect(browse, &QPushButton::clicked, box, [box, line, commit, folder, kind, info] {
+        const QString base = folder ? folder(kind) : QString();
+        const QString start = base.isEmpty() ? QString() : QDir(base).filePath(line->text());
+        const QString picked = QFileDialog::getOpenFileName(box, QString::fromStdString(info.label), start);
+        if (picked.isEmpty()) return;
+        const QString stored = base.isEmpty() ? picked : QDir(base).relativeFilePath(picked);
+        commit(stored.toStdString(), kNoGesture);
+    });
+    return {box, [line](const scene::PropertyValue& v) {
+                if (auto* s = std::get_if<std::string>(&v)) {
+                    const QSignalBlocker block(line);
+                    line->setText(QString::fromStdString(*s));
+                    line->setModified(false);
+                }
+            }};
+}
+
 } // namespace
 
 PropertyEditor createPropertyEditor(const scene::PropertyInfo& info, const scene::Scene& scene,
-                                    CommitValue commit, QWidget* parent) {
+                                    CommitValue commit, QWidget* parent, const EditorContext& context) {
     PropertyEditor editor;
     switch (info.type) {
     case scene::PropertyType::Bool: editor = boolEditor(commit, parent); break;
-    case scene::PropertyType::Int: editor = intEditor(info, commit, parent); break;
-    case scene::PropertyType::Float: editor = floatEditor(info, commit, parent); break;
-    case scene::PropertyType::Vec2: editor = vectorEditor(info, 2, commit, parent); break;
-    case scene::PropertyType::Vec3:
-    case scene::PropertyType::Color: editor = vectorEditor(info, 3, commit, parent); break;
+    case scene::PropertyType::Int: editor = intEditor(info, commit, parent, context); break;
+    case scene::PropertyType::Float: editor = floatEditor(info, commit, parent, context); break;
+    case scene::PropertyType::Vec2: editor = vectorEditor(info, 2, commit, parent, context); break;
+    case scene::PropertyType::Vec3: editor = vectorEditor(info, 3, commit, parent, context); break;
+    case scene::PropertyType::Color: editor = colorEditor(info, commit, parent, context); break;
     case scene::PropertyType::Enum: editor = enumEditor(info, commit, parent); break;
     case scene::PropertyType::IdRef: editor = idRefEditor(info, scene, commit, parent); break;
-    case scene::PropertyType::String:
-    case scene::PropertyType::Path: editor = textEditor(commit, parent); break;
+    case scene::PropertyType::String: editor = textEditor(commit, parent); break;
+    case scene::PropertyType::Path: editor = pathEditor(info, commit, parent, context); break;
     }
     editor.widget->setObjectName(QStringLiteral("edit_") + QString::fromStdString(info.name));
     editor.widget->setToolTip(QString::fromStdString(info.tooltip));

@@ -20,7 +20,8 @@ QString tooltipFor(const scene::PropertyInfo& info) {
 } // namespace
 
 PropertyPanel::PropertyPanel(QWidget* parent)
-    : QWidget(parent), m_title(new QLabel(this)), m_table(new QTableWidget(0, 2, this)) {
+    : QWidget(parent), m_title(new QLabel(this)), m_table(new QTableWidget(0, 2, this)),
+      m_message(new QLabel(this)) {
     setObjectName("propertyPanel");
     m_title->setObjectName("propertyTitle");
     m_table->setObjectName("propertyTable");
@@ -33,10 +34,23 @@ PropertyPanel::PropertyPanel(QWidget* parent)
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_title);
     layout->addWidget(m_table);
+    m_message->setObjectName("propertyMessage");
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet("color: #c0392b");
+    m_message->hide();
+    layout->addWidget(m_message);
     clear();
 }
 
 QString PropertyPanel::title() const { return m_title->text(); }
+
+QString PropertyPanel::message() const { return m_message->text(); }
+
+void PropertyPanel::showMessage(const QString& text) {
+    m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
+    if (!text.isEmpty()) emit valueRefused(text);
+}
 
 QWidget* PropertyPanel::editorFor(const QString& propertyName) const {
     // Cell widgets of replaced rows are deleted later, so search the current rows only.
@@ -95,12 +109,16 @@ void PropertyPanel::rebuild(const scene::Scene& scene, EntityRef ref) {
         PropertyEditor editor;
         if (info.set) {
             const std::string name = info.name;
+            EditorContext context;
+            context.refuse = [this](const QString& text) { showMessage(text); };
+            context.folder = [this](scene::EntityKind kind) { return m_folderFor ? m_folderFor(kind) : QString(); };
             editor = createPropertyEditor(
                 info, scene,
                 [this, ref, name](const scene::PropertyValue& v, GestureId gesture) {
+                    showMessage({}); // an accepted value clears an old refusal
                     emit editRequested(PropertyEdit{ref, name, v, gesture});
                 },
-                m_table);
+                m_table, context);
             editor.show(info.get(entity));
             m_table->setCellWidget(i, 1, editor.widget);
         } else {

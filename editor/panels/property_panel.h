@@ -11,6 +11,7 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -32,15 +33,24 @@ public:
     QString title() const;
     // The editor widget of a property of the shown entity (objectName "edit_<name>"), or null.
     QWidget* editorFor(const QString& propertyName) const;
+    // The line under the table that says why a typed value was refused ("" when none).
+    QString message() const;
+    void showMessage(const QString& text);
+    // The folder a picked file's path is made relative to, per entity kind (file_actions.cpp sets
+    // it: the scene's folder, or the lighting setup's for the environment map).
+    void setFolderFor(std::function<QString(scene::EntityKind)> folder) { m_folderFor = std::move(folder); }
 
 signals:
     void editRequested(const wavelit::editor::PropertyEdit& edit);
+    void valueRefused(const QString& message);
 
 private:
     void rebuild(const scene::Scene& scene, EntityRef ref);
 
     QLabel* m_title;
     QTableWidget* m_table;
+    QLabel* m_message;
+    std::function<QString(scene::EntityKind)> m_folderFor;
     std::optional<EntityRef> m_shown;
     std::vector<const scene::PropertyInfo*> m_infos; // the rows, in order
     std::vector<PropertyEditor> m_editors;

@@ -84,6 +84,34 @@ public:
     Q_INVOKABLE QString scenePath() const;
     Q_INVOKABLE QStringList entities() const; // every outline entry's display name
     Q_INVOKABLE QString environment(const QString& name) const; // an environment variable
+    // Files, outline and panels (issue 14; script_api_files.cpp, docs/scripting.md). Outline edits
+    // are one undo step each and throw on a refused edit; file calls return false on a bad file
+    // and keep the message for lastError() (the window shows it in a dialog).
+    Q_INVOKABLE QString addLight(const QString& type, const QString& name = QString());
+    Q_INVOKABLE QJSValue addObject(const QString& meshPath, const QString& name = QString());
+    Q_INVOKABLE QString addMaterial(const QString& name = QString());
+    Q_INVOKABLE bool remove(const QString& entity);
+    Q_INVOKABLE QString duplicate(const QString& entity);
+    Q_INVOKABLE bool rename(const QString& entity, const QString& name);
+    Q_INVOKABLE bool undo();
+    Q_INVOKABLE bool redo();
+    Q_INVOKABLE bool newScene();
+    Q_INVOKABLE bool saveLighting(const QString& path);
+    Q_INVOKABLE bool applyLighting(const QString& path);
+    Q_INVOKABLE bool setEnvironmentMap(const QString& path);
+    Q_INVOKABLE bool dropFile(const QString& path);
+    Q_INVOKABLE bool renderToFile(const QString& path, const QJSValue& budget);
+    Q_INVOKABLE QString lastError() const;
+    Q_INVOKABLE QStringList recentFiles() const;
+    Q_INVOKABLE QString statusText() const;
+    Q_INVOKABLE double noiseEstimate() const;
+    // Vulkan validation messages of the viewport's session so far (tests require 0; the layers
+    // are on with --validation or WAVELIT_VK_VALIDATION=1).
+    Q_INVOKABLE int validationMessages() const;
+    // Image files for tests: {width, height, finite, mean: [r, g, b], meanLuminance} or throws;
+    // compareImages: {rms, relativeRms, meanA, meanB} over luminance (same size, else throws).
+    Q_INVOKABLE QJSValue imageInfo(const QString& path);
+    Q_INVOKABLE QJSValue compareImages(const QString& a, const QString& b);
     // Ends the editor with this exit code once the script returns.
     Q_INVOKABLE void quit(int exitCode = 0);
 
@@ -93,6 +121,8 @@ public:
 private:
     bool fail(const QString& message); // throws in the engine, returns false
     bool waitForSave(const std::function<void()>& start);
+    // Runs a FileActions operation and spins the event loop until its `done` reports.
+    bool waitForFileOperation(const std::function<void(std::function<void(const QString&)>)>& start);
 
     MainWindow* m_window;
     QJSEngine* m_engine;

@@ -1,5 +1,6 @@
 // `wavelit-cli relight SCENE --edits EDITS.json --out DIR --report R.json [--reference-spp N]
-//  [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]`
+//  [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]
+//  [--coarse-level N]`
 // The relighting preview (docs/relighting.md, architecture.md §5.A) of SCENE after each edit of
 // EDITS.json (relight/edit_list.h), applied in order: DIR/edit_<i>.exr is the preview after edit
 // i (linear radiance at the render size: the scene's, or --width/--height), and the report lists
@@ -9,10 +10,15 @@
 // --preview: preview points per row (default 256, at most the output width; the height follows
 // the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² for a lobe narrower
 // than half a 32² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
-// (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles).
+// (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles);
+// --coarse-level N: also the coarse-to-fine first answer (relight/coarse_to_fine.h) from a preview
+// on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the
+// full one: DIR/edit_<i>_coarse.exr and per edit coarseMs, coarseImageMs (and coarseRelRMSE
+// with a reference).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "relight/coarse_to_fine.h"
 #include "relight/edit_list.h"
 #include "relight/relight_preview.h"
 #include "relight/sphere_level.h"
@@ -29,6 +35,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 namespace wavelit::cli {
 namespace {
@@ -72,7 +79,7 @@ double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
 
 int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
-                                   "--height", "--preview", "--level", "--keep", "--threads"},
+                                   "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride"},
                             {"--skip-full-rebuild"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
@@ -87,7 +94,9 @@ int runRelight(const std::vector<std::string>& argv) {
     auto keep = args->intValue("--keep", 128, 1, 1 << 14);
     auto threads = args->intValue("--threads", 2, 1, 256);
     auto previewWidth = args->intValue("--preview", kDefaultPreviewWidth, 1, 4096);
-    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth})
+    auto coarseLevel = args->intValue("--coarse-level", 0, 1, 7); // 0: no coarse answer
+    auto coarseStride = args->intValue("--coarse-stride", 1, 1, 16);
+    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth, &coarseLevel, &coarseStride})
         if (!*r) return reportError(r->error());
 
     const std::string scenePath = args->positional()[0];
@@ -122,6 +131,18 @@ int runRelight(const std::vector<std::string>& argv) {
     auto preview = relight::RelightPreview::create(scene, settings);
     if (!preview) return reportError(preview.error());
     const double buildMs = buildTimer.milliseconds();
+    // The coarse-to-fine first answer: the same preview on a coarser grid, edited first.
+    std::unique_ptr<relight::RelightPreview> coarse;
+    const relight::RelightSettings coarseSettings =
+        relight::CoarseToFinePreview::coarseSettings(settings, *coarseLevel, *coarseStride);
+    double coarseBuildMs = 0.0;
+    if (*coarseLevel > 0) {
+        util::Timer coarseTimer;
+        auto built = relight::RelightPreview::create(scene, coarseSettings);
+        if (!built) return reportError(built.error());
+        coarse = std::move(built).value();
+        coarseBuildMs = coarseTimer.milliseconds();
+    }
     nlohmann::ordered_json report;
     report["scene"] = scenePath;
     report["preview"] = {{"width", settings.width}, {"height", settings.height},
@@ -130,12 +151,29 @@ int runRelight(const std::vector<std::string>& argv) {
                          {"threads", settings.threads}, {"points", (*preview)->hitCount()},
                          {"buildMs", buildMs},
                          {"bytesPerPoint", (*preview)->hitCount() ? double((*preview)->stateBytes()) / double((*preview)->hitCount()) : 0.0}};
+    if (coarse)
+        report["coarse"] = {{"sphereSide", 1 << coarseSettings.level}, {"keep", coarseSettings.keep},
+                            {"width", coarseSettings.width}, {"height", coarseSettings.height},
+                            {"buildMs", coarseBuildMs},
+                            {"bytesPerPoint", coarse->hitCount() ? double(coarse->stateBytes()) / double(coarse->hitCount()) : 0.0}};
     report["reference"] = *refSpp > 0 ? nlohmann::ordered_json{{"device", "cpu"}, {"sampler", "mis"}, {"bounces", 1}, {"spp", *refSpp}}
                                       : nlohmann::ordered_json(nullptr);
     report["edits"] = nlohmann::ordered_json::array();
     for (size_t i = 0; i < edits->size(); ++i) {
         const relight::PlannedEdit& edit = (*edits)[i];
         if (auto st = edit.changes.apply(scene); !st) return reportError(st.error());
+        nlohmann::ordered_json e;
+        std::optional<util::ImageRGB> coarseImage;
+        if (coarse) {
+            util::Timer coarseTimer;
+            coarse->applyChanges(scene, edit.changes);
+            e["coarseMs"] = coarseTimer.milliseconds();
+            util::Timer coarseImageTimer;
+            coarseImage = coarse->image(*width, *height);
+            e["coarseImageMs"] = coarseImageTimer.milliseconds();
+            const std::string coarseFile = (out / ("edit_" + std::to_string(i) + "_coarse.exr")).string();
+            if (auto st = scene::writeExr(coarseFile, *coarseImage); !st) return reportError(st.error());
+        }
         util::Timer incremental;
         const relight::EditSummary summary = (*preview)->applyChanges(scene, edit.changes);
         const double incrementalMs = incremental.milliseconds();
@@ -150,7 +188,6 @@ int runRelight(const std::vector<std::string>& argv) {
                                 : relight::RelightPreview::create(scene, settings);
         if (!scratch) return reportError(scratch.error());
         const double fullMs = full.milliseconds();
-        nlohmann::ordered_json e;
         e["entity"] = edit.entity;
         e["property"] = edit.property;
         e["kind"] = summary.kind;
@@ -167,6 +204,7 @@ int runRelight(const std::vector<std::string>& argv) {
             auto reference = directLightingReference(scene, *width, *height, *refSpp);
             if (!reference) return reportError(reference.error());
             e["relRMSE"] = std::sqrt(render::relativeMse(image, *reference));
+            if (coarseImage) e["coarseRelRMSE"] = std::sqrt(render::relativeMse(*coarseImage, *reference));
             e["meanPreview"] = render::meanValue(image);
             e["meanReference"] = render::meanValue(*reference);
             if (const char* keepRef = std::getenv("WAVELIT_RELIGHT_KEEP_REFERENCE"); keepRef && *keepRef == '1')

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -58,6 +59,31 @@ glm::vec3 lightSeenAlongRay(const scene::Light& light, const glm::vec3& origin, 
 glm::vec3 lightSeenByPixel(const scene::Light& light, const scene::Camera& camera, const CameraRays& rays,
                            int x, int y, float tMax) {
     if (light.type == scene::LightType::Point || light.type == scene::LightType::Spot) return glm::vec3(0.0f);
+    // Most pixels are nowhere near the light: one cone test against the light's bounding cone
+    // widened by the pixel's own (centre to corner) skips the 16 sub-pixel rays (a light edit
+    // runs this for every pixel).
+    const glm::vec3 centre = rays.direction(x, y), corner = rays.direction(x, y, 0.0f, 0.0f);
+    const double pixel = std::acos(std::clamp(double(glm::dot(centre, corner)), -1.0, 1.0));
+    glm::vec3 axis(0.0f);
+    double cone = kPi; // half angle of a cone about axis that holds the light as seen from the eye
+    if (light.type == scene::LightType::Sun) {
+        const float len = glm::length(light.direction);
+        if (len > 0.0f) {
+            axis = -light.direction / len;
+            cone = 0.5 * double(light.angularDiameterDeg) * kPi / 180.0;
+        }
+    } else {
+        const float r = light.type == scene::LightType::Sphere ? light.radius : 0.5f * glm::length(light.size);
+        const glm::vec3 toLight = light.position - camera.position;
+        const float d = glm::length(toLight);
+        if (d > r && d > 0.0f) {
+            axis = toLight / d;
+            cone = std::asin(std::min(1.0, double(r) / double(d)));
+        }
+    }
+    if (cone + 2.0 * pixel + 1e-3 < kPi &&
+        double(glm::dot(centre, axis)) < std::cos(cone + 2.0 * pixel + 1e-3))
+        return glm::vec3(0.0f);
     constexpr int kSide = 4;
     glm::vec3 sum(0.0f);
     for (int j = 0; j < kSide; ++j)

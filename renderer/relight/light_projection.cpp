@@ -31,35 +31,49 @@ int sidesFor(double omega, const TexelDirections& dirs) {
     return std::clamp(int(std::ceil(std::sqrt(texels))), 1, kMaxSide);
 }
 
+// Collects the samples' (texel, weight, distance) into `out`, merged per texel: at most
+// kMaxSide^2 samples, so a sorted insertion into the caller's buffer beats a sort and keeps a
+// light edit free of allocations (it runs once per point per edit).
 class Accumulator {
 public:
-    explicit Accumulator(const TexelDirections& dirs) : m_dirs(dirs) { m_entries.reserve(kMaxSide * kMaxSide); }
-    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
-        m_entries.push_back({m_dirs.texelOf(dir), weight, distance});
+    Accumulator(const TexelDirections& dirs, std::vector<TexelWeight>& out) : m_dirs(dirs), m_out(out) {
+        m_out.clear();
+        m_out.reserve(kMaxSide * kMaxSide);
     }
-    std::vector<TexelWeight> finish() {
-        std::sort(m_entries.begin(), m_entries.end(),
-                  [](const TexelWeight& a, const TexelWeight& b) { return a.texel < b.texel; });
-        std::vector<TexelWeight> out;
-        std::vector<int> counts;
-        for (const TexelWeight& e : m_entries) {
-            if (!out.empty() && out.back().texel == e.texel) {
-                out.back().weight += e.weight;
-                out.back().distance += e.distance;
-                ++counts.back();
-            } else {
-                out.push_back(e);
-                counts.push_back(1);
-            }
+    void add(const glm::vec3& dir, const glm::vec3& weight, float distance) {
+        const uint32_t texel = m_dirs.texelOf(dir);
+        size_t i = m_out.size();
+        while (i > 0 && m_out[i - 1].texel > texel) --i;
+        const glm::vec3 unit = glm::normalize(dir);
+        const float w = weight.x + weight.y + weight.z;
+        if (i > 0 && m_out[i - 1].texel == texel) {
+            m_out[i - 1].weight += weight;
+            m_out[i - 1].distance += distance;
+            m_out[i - 1].direction += unit * w;
+            ++m_counts[i - 1];
+            return;
         }
-        for (size_t i = 0; i < out.size(); ++i) out[i].distance /= float(counts[i]);
-        std::erase_if(out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
-        return out;
+        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, unit * w});
+        for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
+        m_counts[i] = 1;
+    }
+    // The light is smaller than a quarter texel: one sample carries it all.
+    void markCompact() { m_compact = true; }
+    void finish() {
+        for (size_t i = 0; i < m_out.size(); ++i) {
+            m_out[i].distance /= float(m_counts[i]);
+            const float len = glm::length(m_out[i].direction);
+            m_out[i].direction = len > 0.0f ? m_out[i].direction / len : m_dirs.direction(m_out[i].texel);
+        }
+        std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
+        for (TexelWeight& e : m_out) e.compact = m_compact;
     }
 
 private:
     const TexelDirections& m_dirs;
-    std::vector<TexelWeight> m_entries;
+    std::vector<TexelWeight>& m_out;
+    int m_counts[kMaxSide * kMaxSide] = {};
+    bool m_compact = false;
 };
 
 // Uniform radiance `radiance` over the cone of half angle with 1 - cos = oneMinusCos about axis.
@@ -67,7 +81,10 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
              double oneMinusCos, const glm::vec3& radiance, float distance) {
     const double omega = 2.0 * kPi * oneMinusCos;
     const glm::vec3 total = radiance * float(omega);
-    if (omega < 0.25 * dirs.texelSolidAngle()) return acc.add(axis, total, distance);
+    if (omega < 0.25 * dirs.texelSolidAngle()) {
+        acc.markCompact();
+        return acc.add(axis, total, distance);
+    }
     const int s = sidesFor(omega, dirs);
     const Basis basis = basisAround(axis);
     const glm::vec3 each = total / float(s * s);
@@ -97,6 +114,7 @@ void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& 
     if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
     const double omega = double(area) * glm::dot(toP, n) / std::sqrt(d2) / d2;
     const int s = omega < 0.25 * dirs.texelSolidAngle() ? 1 : sidesFor(omega, dirs);
+    if (s == 1 && omega < 0.25 * dirs.texelSolidAngle()) acc.markCompact();
     for (int j = 0; j < s; ++j)
         for (int i = 0; i < s; ++i) {
             const float a = ((i + 0.5f) / s - 0.5f) * light.size.x;
@@ -133,7 +151,14 @@ glm::vec3 lightPower(const scene::Light& light) { return light.color * light.int
 
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs) {
-    Accumulator acc(dirs);
+    std::vector<TexelWeight> out;
+    projectLight(light, p, dirs, out);
+    return out;
+}
+
+void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                  std::vector<TexelWeight>& out) {
+    Accumulator acc(dirs, out);
     const glm::vec3 power = light.color * light.intensity;
     const glm::vec3 toLight = light.position - p;
     const float d2 = glm::dot(toLight, toLight);
@@ -155,6 +180,7 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         if (!(d2 > 0.0f)) break;
         const glm::vec3 dir = toLight / std::sqrt(d2);
         const float falloff = light.type == scene::LightType::Spot ? spotFalloff(light, -dir) : 1.0f;
+        acc.markCompact();
         acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
         break;
     }
@@ -165,6 +191,7 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         const glm::vec3 axis = -light.direction / len;
         const double half = 0.5 * double(light.angularDiameterDeg) * kPi / 180.0;
         if (half <= 0.0) {
+            acc.markCompact();
             acc.add(axis, power, kInfinity);
             break;
         }
@@ -173,7 +200,7 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
         break;
     }
     }
-    return acc.finish();
+    acc.finish();
 }
 
 } // namespace wavelit::relight

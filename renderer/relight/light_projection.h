@@ -26,6 +26,11 @@ struct TexelWeight {
     uint32_t texel = 0;
     glm::vec3 weight{0.0f}; // integral of radiance over the texel's solid angle
     float distance = 0.0f;  // mean distance to the light's samples in the texel (inf: the sun)
+    // The power-weighted mean direction of the light's samples in the texel (unit), and whether
+    // the whole light is smaller than a quarter texel (one entry): then a narrow glossy lobe
+    // sees it at that direction rather than as the texel's average (point_transfer.h).
+    glm::vec3 direction{0.0f, 0.0f, 1.0f};
+    bool compact = false;
 };
 
 // The light with colour 1 and intensity 1: a light's terms are computed per unit power and
@@ -37,5 +42,8 @@ glm::vec3 lightPower(const scene::Light& light); // colour x intensity
 // Sorted by texel, one entry per texel, no zero weights. p is the visibility rays' origin.
 std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3& p,
                                       const TexelDirections& dirs);
+// The same into `out` (cleared first), which keeps its capacity between calls.
+void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                  std::vector<TexelWeight>& out);
 
 } // namespace wavelit::relight

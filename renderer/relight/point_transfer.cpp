@@ -27,9 +27,9 @@ bool blockedByOthers(const PointState& s, size_t texel) {
     return false;
 }
 
-// cosine x f at a texel above the horizon, without visibility.
+// cosine x f at a texel above the horizon, without visibility, with the given parameters.
 glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const util::Frame& frame,
-                     const glm::vec3& wo, size_t texel) {
+                     const glm::vec3& wo, size_t texel, const plugins::BrdfParams& params) {
     const glm::vec3& wi = ctx.dirs->direction(texel);
     const ResolvedMaterial& m = materialOf(ctx, p);
     const glm::vec3 local = frame.toLocal(wi);
@@ -39,86 +39,23 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
         glm::vec3 sum(0.0f);
         for (int k = 0; k < kCount; ++k) {
             const glm::vec3 l = frame.toLocal(sub[k]);
-            if (l.z > 0.0f) sum += m.brdf->eval(m.params, wo, l) * l.z;
+            if (l.z > 0.0f) sum += m.brdf->eval(params, wo, l) * l.z;
         }
         return sum / float(kCount);
     }
-    return m.brdf->eval(m.params, wo, local) * local.z;
+    return m.brdf->eval(params, wo, local) * local.z;
 }
 
-glm::vec3 transferWithFrame(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                            const util::Frame& frame, const glm::vec3& wo, size_t texel) {
-    if (!testBit(s.lit, texel) || blockedByOthers(s, texel)) return glm::vec3(0.0f);
-    return unshadowed(ctx, p, frame, wo, texel);
-}
+bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) && !blockedByOthers(s, texel); }
 
-} // namespace
-
-ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
-    ResolvedMaterial r;
-    r.brdf = plugins::findBrdf(m.brdf);
-    if (!r.brdf) r.brdf = plugins::findBrdf(plugins::defaultBrdfName());
-    r.params.baseColor = m.baseColor;
-    r.params.roughness = m.roughness;
-    r.emission = m.emission;
-    const plugins::BrdfLobeWidth lobe = r.brdf->lobeWidth(r.params);
-    if (r.brdf->lobeAxis() == plugins::BrdfLobeAxis::Mirror && lobe.halfWidth < 2.0 * texelRadius) {
-        r.narrow = true;
-        const double cap = lobe.capHalfAngle + 2.0 * texelRadius;
-        r.cosCap = cap >= 3.14159265358979 ? -2.0f : float(std::cos(cap));
-    }
-    return r;
-}
-
-size_t PointState::bytes() const {
-    size_t b = sizeof(PointState) + (above.capacity() + lit.capacity()) * sizeof(uint64_t) +
-               transfer.index.capacity() * sizeof(uint16_t) +
-               transfer.value.capacity() * sizeof(glm::vec3) + lightTerms.capacity() * sizeof(glm::vec3) +
-               occlusions.capacity() * sizeof(Occlusion);
-    for (const Occlusion& o : occlusions) b += o.blocked.capacity() * sizeof(uint64_t);
-    return b;
-}
-
-glm::vec3 rayOrigin(const PreviewPoint& p) {
-    return p.position + p.geometric * (kRayOffset * std::max(1.0f, glm::length(p.position)));
-}
-
-glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                     size_t texel) {
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    return transferWithFrame(ctx, p, s, frame, frame.toLocal(p.wo), texel);
-}
-
-void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j) {
-    auto it = std::lower_bound(s.occlusions.begin(), s.occlusions.end(), j,
-                               [](const Occlusion& o, uint32_t v) { return o.object < v; });
-    if (it != s.occlusions.end() && it->object == j) it = s.occlusions.erase(it);
-    if (j == p.object) return;
-    const ObjectOccluder& occluder = (*ctx.occluders)[j];
-    const glm::vec3 origin = rayOrigin(p);
-    const TexelBits cone = coneTexels(occluder.bounds, origin, *ctx.dirs, s.lit);
-    if (!anyBit(cone)) return;
-    TexelBits blocked = castOcclusion(occluder, origin, *ctx.dirs, cone);
-    if (anyBit(blocked)) s.occlusions.insert(it, Occlusion{j, std::move(blocked)});
-}
-
-void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+// Haar analysis of the texel values (already scaled to finest scaling coefficients) and the K
+// largest coefficients. `texels` is clobbered.
+void compress(std::vector<glm::dvec3>& texels, int level, size_t keep, SparseTransfer& out) {
     // Scratch buffers per worker thread: a material edit rebuilds T on thousands of points, and
-    // allocating three grids and three pyramids for each cost as much as the transform.
-    thread_local std::vector<glm::dvec3> texels, parent, coeffs;
+    // allocating grids and pyramids for each cost as much as the transform.
+    thread_local std::vector<glm::dvec3> parent, coeffs;
     thread_local std::vector<std::pair<double, uint32_t>> ranked;
-    const int level = ctx.dirs->level();
-    const size_t count = ctx.dirs->count();
-    texels.assign(count, glm::dvec3(0.0));
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
-    // Finest scaling coefficients: 2^-n times the texel value (haar.h).
-    const double finest = std::ldexp(1.0, -level);
-    for (size_t w = 0; w < s.lit.size(); ++w)
-        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
-            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            texels[t] = glm::dvec3(transferWithFrame(ctx, p, s, frame, wo, t)) * finest;
-        }
+    const size_t count = texels.size();
     // wavelet::forwardHaar's nonstandard decomposition, the three channels in one pass.
     coeffs.assign(count, glm::dvec3(0.0));
     for (int l = level - 1; l >= 0; --l) {
@@ -147,43 +84,194 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
         const double score = 0.2126 * std::abs(v.x) + 0.7152 * std::abs(v.y) + 0.0722 * std::abs(v.z);
         if (score > 0.0) ranked.push_back({-score, uint32_t(i)}); // ascending = largest first
     }
-    const size_t details = ctx.keep > 1 ? ctx.keep - 1 : 0;
+    const size_t details = keep > 1 ? keep - 1 : 0;
     if (ranked.size() > details) {
         std::nth_element(ranked.begin(), ranked.begin() + std::ptrdiff_t(details), ranked.end());
         ranked.resize(details);
     }
-    s.transfer.index.clear();
-    s.transfer.index.push_back(0); // the scaling coefficient (the integral) is always kept
-    for (const auto& r : ranked) s.transfer.index.push_back(uint16_t(r.second));
-    std::sort(s.transfer.index.begin(), s.transfer.index.end());
-    s.transfer.value.resize(s.transfer.index.size());
-    for (size_t k = 0; k < s.transfer.index.size(); ++k)
-        s.transfer.value[k] = glm::vec3(coeffs[s.transfer.index[k]]);
+    out.index.clear();
+    out.index.push_back(0); // the scaling coefficient (the integral) is always kept
+    for (const auto& r : ranked) out.index.push_back(uint16_t(r.second));
+    std::sort(out.index.begin(), out.index.end());
+    out.value.resize(out.index.size());
+    for (size_t k = 0; k < out.index.size(); ++k) out.value[k] = glm::vec3(coeffs[out.index[k]]);
+}
+
+// <T, L_k> for the primary parameters, and for black when `black` is given.
+glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                        const scene::Light& light, glm::vec3* black) {
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    const glm::vec3 origin = rayOrigin(p);
+    glm::vec3 sum(0.0f), sum0(0.0f);
+    thread_local std::vector<TexelWeight> entries;
+    projectLight(unitPowerLight(light), origin, *ctx.dirs, entries);
+    for (const TexelWeight& e : entries) {
+        if (!testBit(s.above, e.texel)) continue;
+        bool seen = visible(s, e.texel);
+        if (!seen && std::isfinite(e.distance))
+            seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
+                                    e.distance * (1.0f - 1e-3f));
+        if (!seen) continue;
+        // A narrow lobe near its mirror direction sees a light smaller than a texel where the
+        // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
+        // is one sharp highlight (the average would spread it over the texel's solid angle). A
+        // light that fills texels keeps the texel average, which covers what it fills.
+        const glm::vec3 local = frame.toLocal(e.direction);
+        if (e.compact && m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
+            if (local.z > 0.0f) {
+                sum += m.brdf->eval(m.params, wo, local) * local.z * e.weight;
+                if (black) sum0 += m.brdf->eval(m.black, wo, local) * local.z * e.weight;
+            }
+            continue;
+        }
+        sum += unshadowed(ctx, p, frame, wo, e.texel, m.params) * e.weight;
+        if (black) sum0 += unshadowed(ctx, p, frame, wo, e.texel, m.black) * e.weight;
+    }
+    if (black) *black = sum0;
+    return sum;
+}
+
+} // namespace
+
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
+    ResolvedMaterial r;
+    r.brdf = plugins::findBrdf(m.brdf);
+    if (!r.brdf) r.brdf = plugins::findBrdf(plugins::defaultBrdfName());
+    r.params.baseColor = m.baseColor;
+    r.params.roughness = m.roughness;
+    r.params.anisotropy = m.anisotropy;
+    r.params.table = m.brdfTable;
+    r.baseColor = m.baseColor;
+    r.emission = m.emission;
+    r.colourUse = colourUseOf(*r.brdf, r.params);
+    if (r.colourUse == ColourUse::Linear || r.colourUse == ColourUse::Affine) r.params.baseColor = glm::vec3(1.0f);
+    r.black = r.params;
+    r.black.baseColor = glm::vec3(0.0f);
+    const plugins::BrdfLobeWidth lobe = r.brdf->lobeWidth(r.params);
+    if (r.brdf->lobeAxis() == plugins::BrdfLobeAxis::Mirror && lobe.halfWidth < 2.0 * texelRadius) {
+        r.narrow = true;
+        const double cap = lobe.capHalfAngle + 2.0 * texelRadius;
+        r.cosCap = cap >= 3.14159265358979 ? -2.0f : float(std::cos(cap));
+    }
+    return r;
+}
+
+size_t PointState::bytes() const {
+    size_t b = sizeof(PointState) + (above.capacity() + lit.capacity()) * sizeof(uint64_t) +
+               transfer.index.capacity() * sizeof(uint16_t) +
+               transfer.value.capacity() * sizeof(glm::vec3) + lightTerms.capacity() * sizeof(glm::vec3) +
+               occlusions.capacity() * sizeof(Occlusion) + transfer0.index.capacity() * sizeof(uint16_t) +
+               transfer0.value.capacity() * sizeof(glm::vec3) + lightTerms0.capacity() * sizeof(glm::vec3);
+    for (const Occlusion& o : occlusions) b += o.blocked.capacity() * sizeof(uint64_t);
+    return b;
+}
+
+glm::vec3 rayOrigin(const PreviewPoint& p) {
+    return p.position + p.geometric * (kRayOffset * std::max(1.0f, glm::length(p.position)));
+}
+
+glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                     size_t texel) {
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    if (!visible(s, texel)) return glm::vec3(0.0f);
+    return unshadowed(ctx, p, frame, frame.toLocal(p.wo), texel, materialOf(ctx, p).params);
+}
+
+void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j) {
+    auto it = std::lower_bound(s.occlusions.begin(), s.occlusions.end(), j,
+                               [](const Occlusion& o, uint32_t v) { return o.object < v; });
+    if (it != s.occlusions.end() && it->object == j) it = s.occlusions.erase(it);
+    if (j == p.object) return;
+    const ObjectOccluder& occluder = (*ctx.occluders)[j];
+    const glm::vec3 origin = rayOrigin(p);
+    const TexelBits cone = coneTexels(occluder.bounds, origin, *ctx.dirs, s.lit);
+    if (!anyBit(cone)) return;
+    TexelBits blocked = castOcclusion(occluder, origin, *ctx.dirs, cone);
+    if (anyBit(blocked)) s.occlusions.insert(it, Occlusion{j, std::move(blocked)});
+}
+
+void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+    thread_local std::vector<glm::dvec3> texels, texels0;
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const bool affine = m.colourUse == ColourUse::Affine;
+    const int level = ctx.dirs->level();
+    const size_t count = ctx.dirs->count();
+    texels.assign(count, glm::dvec3(0.0));
+    if (affine) texels0.assign(count, glm::dvec3(0.0));
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    // Finest scaling coefficients: 2^-n times the texel value (haar.h).
+    const double finest = std::ldexp(1.0, -level);
+    for (size_t w = 0; w < s.lit.size(); ++w)
+        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
+            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
+            if (blockedByOthers(s, t)) continue;
+            texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params)) * finest;
+            if (affine) texels0[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.black)) * finest;
+        }
+    compress(texels, level, ctx.keep, s.transfer);
+    if (affine) compress(texels0, level, ctx.keep, s.transfer0);
+    else s.transfer0 = SparseTransfer{};
+}
+
+glm::vec3 environmentTerm(const SparseTransfer& t, const EnvironmentFactor& env) {
+    glm::dvec3 sum(0.0);
+    const glm::vec3* l = env.interleaved.data();
+    for (size_t k = 0; k < t.index.size(); ++k) sum += glm::dvec3(t.value[k] * l[t.index[k]]);
+    return glm::vec3(sum * (4.0 * std::numbers::pi));
 }
 
 glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env) {
-    glm::dvec3 sum(0.0);
-    const glm::vec3* l = env.interleaved.data();
-    for (size_t k = 0; k < s.transfer.index.size(); ++k)
-        sum += glm::dvec3(s.transfer.value[k] * l[s.transfer.index[k]]);
-    return glm::vec3(sum * (4.0 * std::numbers::pi));
+    return environmentTerm(s.transfer, env);
 }
 
 glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                     const scene::Light& light) {
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
-    const glm::vec3 origin = rayOrigin(p);
-    glm::vec3 sum(0.0f);
-    for (const TexelWeight& e : projectLight(unitPowerLight(light), origin, *ctx.dirs)) {
-        if (!testBit(s.above, e.texel)) continue;
-        bool seen = testBit(s.lit, e.texel) && !blockedByOthers(s, e.texel);
-        if (!seen && std::isfinite(e.distance))
-            seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
-                                    e.distance * (1.0f - 1e-3f));
-        if (seen) sum += unshadowed(ctx, p, frame, wo, e.texel) * e.weight;
+    return lightTermWith(ctx, p, s, light, nullptr);
+}
+
+void updateEnvironmentTerms(const TransferContext& ctx, PointState& s) {
+    s.envTerm = environmentTerm(s.transfer, *ctx.environment);
+    s.envTerm0 = s.transfer0.index.empty() ? glm::vec3(0.0f) : environmentTerm(s.transfer0, *ctx.environment);
+}
+
+void updateLightTerms(const TransferContext& ctx, const PreviewPoint& p, PointState& s, size_t k) {
+    const auto& lights = ctx.scene->lighting.lights;
+    s.lightTerms.resize(lights.size());
+    if (materialOf(ctx, p).colourUse != ColourUse::Affine) {
+        s.lightTerms0.clear();
+        s.lightTerms[k] = lightTermWith(ctx, p, s, lights[k], nullptr);
+        return;
     }
-    return sum;
+    s.lightTerms0.resize(lights.size());
+    s.lightTerms[k] = lightTermWith(ctx, p, s, lights[k], &s.lightTerms0[k]);
+}
+
+void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+    rebuildTransfer(ctx, p, s);
+    updateEnvironmentTerms(ctx, s);
+    s.lightTerms.clear();
+    s.lightTerms0.clear();
+    for (size_t k = 0; k < ctx.scene->lighting.lights.size(); ++k) updateLightTerms(ctx, p, s, k);
+}
+
+glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
+                   const std::vector<glm::vec3>& lightPowers) {
+    glm::vec3 white = s.envTerm * envScale;
+    for (size_t k = 0; k < s.lightTerms.size(); ++k) white += s.lightTerms[k] * lightPowers[k];
+    switch (m.colourUse) {
+    case ColourUse::Linear: return m.baseColor * white;
+    case ColourUse::Affine: {
+        glm::vec3 black = s.envTerm0 * envScale;
+        for (size_t k = 0; k < s.lightTerms0.size(); ++k) black += s.lightTerms0[k] * lightPowers[k];
+        return black + m.baseColor * (white - black);
+    }
+    case ColourUse::Fixed:
+    case ColourUse::Ignored: break;
+    }
+    return white;
 }
 
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
@@ -199,10 +287,7 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];
     for (uint32_t j = 0; j < ctx.occluders->size(); ++j) updateOcclusion(ctx, p, s, j);
-    rebuildTransfer(ctx, p, s);
-    s.envTerm = environmentTerm(s, *ctx.environment);
-    for (const scene::Light& light : ctx.scene->lighting.lights)
-        s.lightTerms.push_back(lightTerm(ctx, p, s, light));
+    updateTransferAndTerms(ctx, p, s);
     return s;
 }
 

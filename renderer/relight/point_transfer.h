@@ -20,6 +20,7 @@
 // the environment term and one term per light, each rebuilt alone when its light changes.
 #pragma once
 
+#include "relight/colour_use.h"
 #include "relight/environment_factor.h"
 #include "relight/object_occluder.h"
 #include "relight/preview_points.h"
@@ -48,15 +49,26 @@ struct PointState {
     TexelBits above; // texels above both the geometric and the shading horizon
     TexelBits lit;   // above, and not blocked by the point's own object
     std::vector<Occlusion> occlusions; // ascending object index
+    // T, its environment term and light terms for the material's primary parameters
+    // (ResolvedMaterial::params: white for a colour-linear or colour-affine BRDF).
     SparseTransfer transfer;
     glm::vec3 envTerm{0.0f};           // per unit environmentScale()
     std::vector<glm::vec3> lightTerms; // per Scene::lighting.lights entry, per unit lightPower()
+    // The same for black (ResolvedMaterial::black), for a colour-affine BRDF only (else empty):
+    // the image takes black + colour x (white - black) per channel.
+    SparseTransfer transfer0;
+    glm::vec3 envTerm0{0.0f};
+    std::vector<glm::vec3> lightTerms0;
     size_t bytes() const;
 };
 
 struct ResolvedMaterial {
     const plugins::Brdf* brdf = nullptr;
+    // The parameters T is computed with: the material's own, or white for Linear / Affine.
     plugins::BrdfParams params;
+    plugins::BrdfParams black; // Affine: the same with baseColor 0
+    ColourUse colourUse = ColourUse::Fixed;
+    glm::vec3 baseColor{0.8f}; // the material's own colour (mixed in by the image)
     glm::vec3 emission{0.0f};
     // A glossy lobe narrower than a texel: f x cosine is averaged over each texel within
     // cosCap of the mirror direction (TexelDirections::kSub^2 directions) instead of taken at
@@ -94,8 +106,18 @@ glm::vec3 transferAt(const TransferContext& ctx, const PreviewPoint& p, const Po
                      size_t texel);
 // 4 pi <T_K, L> from the kept coefficients (per unit intensity x tint).
 glm::vec3 environmentTerm(const PointState& s, const EnvironmentFactor& env);
+glm::vec3 environmentTerm(const SparseTransfer& t, const EnvironmentFactor& env);
 // <T, L_k> over the light's texels, per unit colour x intensity.
 glm::vec3 lightTerm(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                     const scene::Light& light);
+// The cached terms, for the primary and (Affine) the black parameters alike: the environment
+// terms, light k's terms, or T and every term.
+void updateEnvironmentTerms(const TransferContext& ctx, PointState& s);
+void updateLightTerms(const TransferContext& ctx, const PreviewPoint& p, PointState& s, size_t k);
+void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, PointState& s);
+// The point's radiance from its cached terms (per unit power; the material's colour mixed in
+// per ColourUse): environment term x envScale + sum of light terms x powers.
+glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
+                   const std::vector<glm::vec3>& lightPowers);
 
 } // namespace wavelit::relight

@@ -96,6 +96,21 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         summary.factorsRebuilt.push_back("light power:" + edited.lighting.lights[k].name);
         return true;
     });
+    // Colour and emission edits of a material whose f is linear or affine in its colour (or does
+    // not read it): the terms are cached for white and black, so the image mixes in the new
+    // colour, nothing per point (colour_use.h). The class does not depend on the colour.
+    std::erase_if(materials, [&](uint32_t m) {
+        if (m >= m_materials.size() || m >= edited.materials.size()) return false;
+        const scene::EntityRef ref{scene::EntityKind::Material, edited.materials[m].id};
+        const bool colourFree = m_materials[m].colourUse != ColourUse::Fixed;
+        if (onlyScales(changes, ref, {"emission"})) {
+            summary.factorsRebuilt.push_back("emission:" + edited.materials[m].name);
+            return true;
+        }
+        if (!colourFree || !onlyScales(changes, ref, {"baseColor", "emission"})) return false;
+        summary.factorsRebuilt.push_back("brdf colour:" + edited.materials[m].name);
+        return true;
+    });
     std::vector<BoundingSphere> oldBounds;
     for (size_t j : objects) oldBounds.push_back(m_occluders[j].bounds);
     m_scene = std::make_unique<scene::Scene>(edited);
@@ -146,6 +161,11 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
 
     summary.sharedMs = timer.milliseconds();
     timer.restart();
+    // Power, colour and emission edits leave nothing per point: skip the pass over the points.
+    if (!recast && !environment && lights.empty() && materials.empty() && objects.empty()) {
+        summary.pointsMs = timer.milliseconds();
+        return summary;
+    }
     const TransferContext ctx = context();
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     std::vector<uint8_t> touched(m_points.size(), 0);
@@ -161,10 +181,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
             touched[i] = 1;
             for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
             if (onlyMaterial) {
-                rebuildTransfer(ctx, p, s);
-                s.envTerm = environmentTerm(s, m_environment);
-                for (size_t k = 0; k < s.lightTerms.size(); ++k)
-                    s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+                updateTransferAndTerms(ctx, p, s);
             } else if (p.hit) {
                 s = buildPointState(ctx, p);
             } else {
@@ -208,23 +225,19 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         }
         if (transfer) {
             touched[i] = 1;
-            rebuildTransfer(ctx, p, s);
-            s.envTerm = environmentTerm(s, m_environment);
-            for (size_t k = 0; k < s.lightTerms.size(); ++k)
-                s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            updateTransferAndTerms(ctx, p, s);
             return;
         }
         if (environment) {
-            s.envTerm = environmentTerm(s, m_environment);
+            updateEnvironmentTerms(ctx, s);
             touched[i] = 1;
         }
         if (lightsToo) {
-            for (size_t k = 0; k < s.lightTerms.size(); ++k)
-                s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            for (size_t k = 0; k < s.lightTerms.size(); ++k) updateLightTerms(ctx, p, s, k);
             return;
         }
         for (size_t k : lights) {
-            s.lightTerms[k] = lightTerm(ctx, p, s, m_scene->lighting.lights[k]);
+            updateLightTerms(ctx, p, s, k);
             touched[i] = 1;
         }
     });

@@ -79,23 +79,21 @@ void RelightPreview::updateCameraLight(size_t k, size_t i, const CameraRays& ray
                                             int(i % size_t(w)), int(i / size_t(w)), m_points[i].distance);
 }
 
-glm::vec3 RelightPreview::radiance(size_t i) const {
+glm::vec3 RelightPreview::radiance(size_t i, const std::vector<glm::vec3>& powers) const {
     glm::vec3 lights(0.0f);
     for (size_t k = 0; k < m_cameraLights.size(); ++k)
-        lights += m_cameraLights[k][i] * lightPower(m_scene->lighting.lights[k]);
+        lights += m_cameraLights[k][i] * powers[k];
     const glm::vec3 envScale = environmentScale(m_scene->lighting.environment);
     if (!m_points[i].hit) return m_background[i] * envScale + lights;
-    const PointState& s = m_states[i];
-    glm::vec3 sum = lights + m_materials[std::min<size_t>(m_points[i].material, m_materials.size() - 1)].emission;
-    sum += s.envTerm * envScale;
-    for (size_t k = 0; k < s.lightTerms.size(); ++k)
-        sum += s.lightTerms[k] * lightPower(m_scene->lighting.lights[k]);
-    return sum;
+    const ResolvedMaterial& m = m_materials[std::min<size_t>(m_points[i].material, m_materials.size() - 1)];
+    return lights + m.emission + mixTerms(m, m_states[i], envScale, powers);
 }
 
 util::ImageRGB RelightPreview::image() const {
     util::ImageRGB out(m_settings.width, m_settings.height);
-    for (size_t i = 0; i < m_points.size(); ++i) out.pixels[i] = radiance(i);
+    std::vector<glm::vec3> powers;
+    for (const scene::Light& light : m_scene->lighting.lights) powers.push_back(lightPower(light));
+    for (size_t i = 0; i < m_points.size(); ++i) out.pixels[i] = radiance(i, powers);
     return out;
 }
 

@@ -77,7 +77,7 @@ private:
     explicit RelightPreview(const RelightSettings& settings);
     void rebuildAll(const scene::Scene& scene);
     void resolveMaterials();
-    glm::vec3 radiance(size_t i) const;
+    glm::vec3 radiance(size_t i, const std::vector<glm::vec3>& lightPowers) const;
 
     RelightSettings m_settings;
     TexelDirections m_dirs;

@@ -3,11 +3,15 @@
 // per point the same inputs go through the same code, so in practice bit for bit).
 #include "relight/relight_preview.h"
 #include "relight/relight_test_support.h"
+#include "relight/colour_use.h"
 #include "relight/sphere_level.h"
+
+#include <glm/geometric.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace wavelit::relight {
 namespace {
@@ -71,6 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"SunDirection", K::Light, 9, "direction", glm::vec3(0.4f, -1.0f, 0.1f), "light"},
         EditCase{"MaterialColor", K::Material, 1, "baseColor", glm::vec3(0.2f, 0.7f, 0.3f), "material"},
         EditCase{"MaterialRoughness", K::Material, 2, "roughness", 0.1f, "material"},
+        EditCase{"GgxColor", K::Material, 2, "baseColor", glm::vec3(0.1f, 0.9f, 0.4f), "material"},
+        EditCase{"MaterialEmission", K::Material, 1, "emission", glm::vec3(0.5f, 0.1f, 0.0f), "material"},
         EditCase{"ObjectMove", K::Object, 4, "translation", glm::vec3(0.6f, 0.5f, 0.3f), "object"},
         EditCase{"ObjectRotate", K::Object, 4, "rotation", glm::vec3(0.0f, 30.0f, 0.0f), "object"},
         EditCase{"ObjectMaterial", K::Object, 4, "material", scene::EntityId(1), "object"},
@@ -96,6 +102,78 @@ TEST(RelightPreview, ASequenceOfEditsStaysEqualToFromScratch) {
     auto scratch = RelightPreview::create(scene, testing::smallSettings());
     ASSERT_TRUE(scratch);
     expectSameImage((*preview)->image(), (*scratch)->image());
+}
+
+// A colour or emission edit of a material whose BRDF is linear (lambert) or affine (ggx's Schlick
+// F0) in its colour touches no point: the terms are cached for white and black and mixed in the
+// image (colour_use.h); the image still equals a build from scratch (EveryEditKind above).
+TEST(RelightPreview, ColourEditsOfLinearAndAffineBrdfsTouchNoPoint) {
+    scene::Scene scene = testing::makeRelightScene();
+    auto preview = RelightPreview::create(scene, testing::smallSettings());
+    ASSERT_TRUE(preview);
+    for (const auto& [id, property, value] :
+         std::vector<std::tuple<scene::EntityId, const char*, glm::vec3>>{
+             {1, "baseColor", glm::vec3(0.1f, 0.2f, 0.9f)}, {2, "baseColor", glm::vec3(0.9f, 0.1f, 0.1f)},
+             {2, "emission", glm::vec3(1.0f)}}) {
+        scene::ChangeSet changes;
+        ASSERT_TRUE(changes.setProperty(scene, {K::Material, id}, property, value));
+        ASSERT_TRUE(changes.apply(scene));
+        const EditSummary summary = (*preview)->applyChanges(scene, changes);
+        EXPECT_EQ(summary.kind, "material");
+        EXPECT_EQ(summary.pointsTouched, 0u) << property << " of material " << id;
+    }
+    // A roughness edit still rebuilds T on the material's points.
+    scene::ChangeSet changes;
+    ASSERT_TRUE(changes.setProperty(scene, {K::Material, 2}, "roughness", 0.6f));
+    ASSERT_TRUE(changes.apply(scene));
+    EXPECT_GT((*preview)->applyChanges(scene, changes).pointsTouched, 0u);
+}
+
+// f(c) against direct evaluation: the class the probe finds for each plugin, and a plugin that is
+// not affine in its colour (f = c^2 / pi) is Fixed, so its colour edits rebuild T.
+TEST(RelightColourUse, ClassifiesThePluginsAndRefusesANonAffineOne) {
+    plugins::BrdfParams params(glm::vec3(0.5f), 0.3f);
+    EXPECT_EQ(colourUseOf(*plugins::findBrdf("lambert"), params), ColourUse::Linear);
+    EXPECT_EQ(colourUseOf(*plugins::findBrdf("ggx"), params), ColourUse::Affine);
+    struct Squared final : plugins::Brdf {
+        const plugins::Brdf& base = *plugins::findBrdf("lambert");
+        const char* name() const override { return "squared"; }
+        std::span<const plugins::BrdfParameterInfo> parameters() const override { return base.parameters(); }
+        plugins::BrdfLobeAxis lobeAxis() const override { return base.lobeAxis(); }
+        plugins::BrdfLobeWidth lobeWidth(const plugins::BrdfParams& p) const override { return base.lobeWidth(p); }
+        plugins::BrdfGpuTwin gpuTwin() const override { return {}; }
+        glm::vec3 eval(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+            return p.baseColor * base.eval(p, wo, wi);
+        }
+        plugins::BrdfSample sample(const plugins::BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
+            return base.sample(p, wo, u1, u2);
+        }
+        float pdf(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+            return base.pdf(p, wo, wi);
+        }
+        std::optional<glm::vec2> invert(const plugins::BrdfParams& p, const glm::vec3& wo,
+                                        const glm::vec3& wi) const override {
+            return base.invert(p, wo, wi);
+        }
+    } squared;
+    EXPECT_EQ(colourUseOf(squared, params), ColourUse::Fixed);
+    // Every registered plugin's class reproduces f at a colour it was not probed with.
+    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f)), wi = glm::normalize(glm::vec3(-0.25f, 0.3f, 0.7f));
+    for (const plugins::Brdf* brdf : plugins::brdfRegistry()) {
+        if (plugins::brdfReadsFile(*brdf)) continue; // needs a table
+        const ColourUse use = colourUseOf(*brdf, params);
+        plugins::BrdfParams c = params, black = params, white = params;
+        c.baseColor = glm::vec3(0.33f, 0.61f, 0.12f);
+        black.baseColor = glm::vec3(0.0f);
+        white.baseColor = glm::vec3(1.0f);
+        const glm::vec3 direct = brdf->eval(c, wo, wi), f0 = brdf->eval(black, wo, wi), f1 = brdf->eval(white, wo, wi);
+        const glm::vec3 mixed = use == ColourUse::Linear   ? c.baseColor * f1
+                                : use == ColourUse::Affine ? f0 + c.baseColor * (f1 - f0)
+                                                           : direct;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(mixed[k], direct[k], 1e-5 * std::max(1.0f, std::abs(direct[k])))
+                << brdf->name() << " (" << colourUseName(use) << ") channel " << k;
+    }
 }
 
 TEST(RelightSphereLevel, FinerGridOnlyForALobeNarrowerThanHalfATexel) {

@@ -6,11 +6,13 @@
 #include "relight/relight_test_support.h"
 #include "wavelet/equirect_resample.h"
 #include "wavelet/haar.h"
+#include "util/hemisphere_sampling.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -67,6 +69,9 @@ TEST(RelightQuadrature, LightTermEqualsHaarInnerProductAtFullCoefficients) {
         const PreviewPoint& p = (*preview)->points()[i];
         const PointState& s = (*preview)->states()[i];
         if (!p.hit) continue;
+        // A narrow glossy lobe sees a light where it is, not as T's texel average (point_transfer.h);
+        // those points are checked against direct evaluation below.
+        if ((*ctx.materials)[std::min<size_t>(p.material, ctx.materials->size() - 1)].narrow) continue;
         for (size_t k = 0; k < scene.lighting.lights.size(); ++k) {
             const auto entries = projectLight(unitPowerLight(scene.lighting.lights[k]), rayOrigin(p), *ctx.dirs);
             bool open = true;
@@ -94,6 +99,48 @@ TEST(RelightQuadrature, LightTermEqualsHaarInnerProductAtFullCoefficients) {
         }
     }
     EXPECT_GT(checked, 10u);
+}
+
+// On a narrow glossy lobe a point light's term is f x cosine at the light's own direction times
+// I / D^2 (what the path tracer's next-event estimate computes), not T's average over the texel.
+TEST(RelightQuadrature, NarrowLobeSeesAPointLightAtItsDirection) {
+    RelightSettings settings = testing::smallSettings();
+    scene::Scene scene = testing::makeRelightScene();
+    scene.materials[1].roughness = 0.05f; // the box's ggx: a lobe far narrower than a 16^2 texel
+    // The bulb where the box's top face mirrors the camera (top centre (0, 1, 0), camera
+    // (0, 2.5, 5)), so points there see it inside their lobe.
+    scene.lighting.lights[0].position = {0.0f, 1.6f, -2.0f};
+    auto preview = RelightPreview::create(scene, settings);
+    ASSERT_TRUE(preview);
+    const TransferContext ctx = (*preview)->context();
+    const scene::Light& bulb = scene.lighting.lights[0];
+    ASSERT_EQ(bulb.type, scene::LightType::Point);
+    size_t checked = 0;
+    for (size_t i = 0; i < (*preview)->points().size(); ++i) {
+        const PreviewPoint& p = (*preview)->points()[i];
+        const PointState& s = (*preview)->states()[i];
+        if (!p.hit || p.material != 1) continue;
+        const ResolvedMaterial& m = (*ctx.materials)[1];
+        ASSERT_TRUE(m.narrow);
+        const glm::vec3 origin = rayOrigin(p), toLight = bulb.position - origin;
+        const glm::vec3 dir = glm::normalize(toLight);
+        const size_t texel = ctx.dirs->texelOf(dir);
+        if (!testBit(s.lit, texel)) continue;
+        bool open = true;
+        for (const Occlusion& o : s.occlusions) open = open && !testBit(o.blocked, texel);
+        if (!open) continue;
+        const util::Frame frame = util::Frame::fromNormal(p.shading);
+        const glm::vec3 wo = frame.toLocal(p.wo), wi = frame.toLocal(dir);
+        if (glm::dot(wi, glm::vec3(-wo.x, -wo.y, wo.z)) < m.cosCap || wi.z <= 0.0f) continue;
+        // White (the affine class's primary parameters) and black, mixed with the colour.
+        const glm::vec3 f1 = m.brdf->eval(m.params, wo, wi), f0 = m.brdf->eval(m.black, wo, wi);
+        const float irradiance = float(1.0 / (4.0 * std::numbers::pi)) / glm::dot(toLight, toLight) * wi.z;
+        const glm::dvec3 expected(f1 * irradiance), expected0(f0 * irradiance);
+        EXPECT_LE(relativeError(glm::dvec3(s.lightTerms[0]), expected), 1e-4) << "point " << i;
+        EXPECT_LE(relativeError(glm::dvec3(s.lightTerms0[0]), expected0), 1e-4) << "point " << i;
+        ++checked;
+    }
+    EXPECT_GT(checked, 0u);
 }
 
 // The reduced equirect keeps the map's integral over the sphere (solid-angle-weighted blocks).

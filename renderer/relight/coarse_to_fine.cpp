@@ -1,0 +1,53 @@
+#include "relight/coarse_to_fine.h"
+
+#include <algorithm>
+
+namespace wavelit::relight {
+
+RelightSettings CoarseToFinePreview::coarseSettings(const RelightSettings& settings, int coarseLevel,
+                                                   int pointStride) {
+    RelightSettings coarse = settings;
+    coarse.level = coarseLevel < 0 ? std::max(1, settings.level - 2) : coarseLevel;
+    coarse.keep = std::min(settings.keep, size_t(1) << (2 * std::clamp(coarse.level, 1, 7)));
+    const int stride = std::max(1, pointStride);
+    coarse.width = (settings.width + stride - 1) / stride;
+    coarse.height = (settings.height + stride - 1) / stride;
+    return coarse;
+}
+
+util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(const scene::Scene& scene,
+                                                                               const RelightSettings& settings,
+                                                                               int coarseLevel, int pointStride) {
+    auto fine = RelightPreview::create(scene, settings);
+    if (!fine) return fine.error();
+    auto coarse = RelightPreview::create(scene, coarseSettings(settings, coarseLevel, pointStride));
+    if (!coarse) return coarse.error();
+    std::unique_ptr<CoarseToFinePreview> out(new CoarseToFinePreview());
+    out->m_fine = std::move(fine).value();
+    out->m_coarse = std::move(coarse).value();
+    return out;
+}
+
+EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
+    const EditSummary summary = m_coarse->applyChanges(edited, changes);
+    if (m_pending) {
+        m_pending->changes.merge(changes);
+        *m_pending->scene = edited;
+    } else {
+        m_pending = Pending{std::make_unique<scene::Scene>(edited), changes};
+    }
+    return summary;
+}
+
+EditSummary CoarseToFinePreview::applyFine() {
+    if (!m_pending) return EditSummary{"display", {}, 0, 0.0, 0.0};
+    Pending pending = std::move(*m_pending);
+    m_pending.reset();
+    return m_fine->applyChanges(*pending.scene, pending.changes);
+}
+
+util::ImageRGB CoarseToFinePreview::image(int width, int height) const {
+    return m_pending ? m_coarse->image(width, height) : m_fine->image(width, height);
+}
+
+} // namespace wavelit::relight

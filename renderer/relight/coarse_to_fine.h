@@ -1,0 +1,56 @@
+// Coarse-to-fine relighting (issue 13): a first answer within a UI frame of an edit from the
+// coarse levels of the sphere grid's Haar pyramid, then the full answer. Two previews of the same
+// scene and camera: a coarse one on the 2^(n-2) grid (16 x fewer texels: every factor's coarse
+// coefficients, hence 16 x fewer occlusion rays and BRDF evaluations per point and a cheaper
+// light projection), optionally on every `pointStride`-th pixel per axis (its image upsampled by
+// nearest point), and the full one. An edit goes to the coarse preview at once
+// (applyCoarse, then coarseImage); the full preview takes the edits that piled up in one merged
+// change set when the editor has time (applyFine, then image) — during a drag that is once the
+// drag pauses, not once per frame. After applyFine the full image equals RelightPreview::create
+// on the edited scene (and the coarse one a coarse create), as each preview alone does.
+#pragma once
+
+#include "relight/relight_preview.h"
+
+#include <memory>
+#include <optional>
+
+namespace wavelit::relight {
+
+class CoarseToFinePreview {
+public:
+    // coarseLevel < 0: settings.level - 2 (at least 1). Keeps min(settings.keep, 4^coarseLevel)
+    // coefficients on the coarse grid; pointStride >= 1: the coarse preview has
+    // ceil(width / stride) x ceil(height / stride) points. Errors as RelightPreview::create.
+    static util::Result<std::unique_ptr<CoarseToFinePreview>> create(const scene::Scene& scene,
+                                                                     const RelightSettings& settings,
+                                                                     int coarseLevel = -1,
+                                                                     int pointStride = 1);
+    // The coarse preview's settings for these arguments (what create uses).
+    static RelightSettings coarseSettings(const RelightSettings& settings, int coarseLevel = -1,
+                                          int pointStride = 1);
+
+    // The first answer: `edited` is the scene after `changes`; the full preview is now behind.
+    EditSummary applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes);
+    // Brings the full preview up to the newest edited scene with every pending change set merged
+    // into one (an empty summary, kind "display", when nothing is pending).
+    EditSummary applyFine();
+    bool finePending() const { return m_pending.has_value(); }
+
+    // The full preview's image when nothing is pending, else the coarse one's.
+    util::ImageRGB image(int width, int height) const;
+    util::ImageRGB coarseImage(int width, int height) const { return m_coarse->image(width, height); }
+
+    const RelightPreview& fine() const { return *m_fine; }
+    const RelightPreview& coarse() const { return *m_coarse; }
+
+private:
+    struct Pending {
+        std::unique_ptr<scene::Scene> scene;
+        scene::ChangeSet changes;
+    };
+    std::unique_ptr<RelightPreview> m_fine, m_coarse;
+    std::optional<Pending> m_pending;
+};
+
+} // namespace wavelit::relight

@@ -1,0 +1,65 @@
+// File -> Render to file's progress dialog (issue 14): a render with a budget far beyond the test
+// shows a progress dialog that advances (the bar's value and its "N spp" text), and a click on its
+// Cancel button stops the render within seconds, reports "cancelled" and writes no file. Then a
+// small budget renders to completion through the same path and the file appears.
+#include "app/file_actions.h"
+#include "app/main_window.h"
+#include "app/scene_document.h"
+
+#include <QFileInfo>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace wavelit;
+using namespace wavelit::editor;
+
+class FilesRenderCancelTest : public QObject {
+    Q_OBJECT
+private slots:
+    void cancelStopsAndWritesNothing();
+};
+
+void FilesRenderCancelTest::cancelStopsAndWritesNothing() {
+    constexpr int kTimeoutMs = 240000;
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 32;
+    settings.sampler = render::SamplerKind::Bsdf;
+    settings.maxSamplesPerPixel = 1;
+    settings.validation = qEnvironmentVariableIntValue("WAVELIT_VK_VALIDATION") == 1;
+    MainWindow window(settings);
+    window.show();
+    window.document()->open(QStringLiteral(WAVELIT_RESOURCE_DIR "/scenes/ring_on_ground.wlscene"));
+    QVERIFY(QTest::qWaitFor([&] { return window.document()->scene() != nullptr; }, kTimeoutMs));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("cancelled.exr");
+
+    QString result = "not finished";
+    window.files()->renderToFile(path, {1 << 20, 0.0}, true, [&](const QString& error) { result = error; });
+    auto* dialog = window.findChild<QProgressDialog*>("renderProgress");
+    QVERIFY(dialog);
+    QVERIFY(QTest::qWaitFor([&] { return dialog->value() > 0 || dialog->labelText().contains("spp"); }, kTimeoutMs));
+    qInfo("progress before cancel: %s", qPrintable(dialog->labelText()));
+    QPushButton* cancel = dialog->findChild<QPushButton*>();
+    QVERIFY(cancel);
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QVERIFY(QTest::qWaitFor([&] { return result != "not finished"; }, kTimeoutMs));
+    qInfo("cancelled after %lld ms", clock.elapsed());
+    QCOMPARE(result, QStringLiteral("cancelled"));
+    QVERIFY(!QFileInfo::exists(path));
+    QVERIFY(!window.files()->fileRender()->isRunning());
+
+    const QString done = dir.filePath("done.exr");
+    result = "not finished";
+    window.files()->renderToFile(done, {2, 0.0}, true, [&](const QString& error) { result = error; });
+    QVERIFY(QTest::qWaitFor([&] { return result != "not finished"; }, kTimeoutMs));
+    QCOMPARE(result, QString());
+    QVERIFY(QFileInfo::exists(done));
+}
+
+QTEST_MAIN(FilesRenderCancelTest)
+#include "files_render_cancel_test.moc"
