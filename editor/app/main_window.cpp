@@ -3,7 +3,9 @@
 #include "app/autosave_controller.h"
 #include "app/editor_actions.h"
 #include "app/error_reporter.h"
+#include "app/extract_sun_edit.h"
 #include "app/file_actions.h"
+#include "app/lightmix_compare.h"
 #include "app/outline_actions.h"
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
@@ -17,6 +19,8 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QMenu>
+#include <QMenuBar>
 #include <QStatusBar>
 
 namespace wavelit::editor {
@@ -37,7 +41,7 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     : QMainWindow(parent), m_document(new SceneDocument(this)), m_errors(new ErrorReporter(this)),
       m_render(new RenderController(renderSettings, this)), m_viewport(new ViewportWidget(this)),
       m_outline(new OutlinePanel(this)), m_properties(new PropertyPanel(this)),
-      m_lightMix(new LightMixPanel(this)),
+      m_lightMix(new LightMixPanel(this)), m_lightMixCompare(nullptr),
       m_status(new RenderStatusLabel(this)), m_actions(new EditorActions(this, m_document, m_errors)),
       m_cameraHandler(new CameraOrbitHandler(this)),
       m_autosave(new AutosaveController(m_document, m_errors, this)) {
@@ -55,6 +59,7 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
     m_files = new FileActions(this);            // New, recent, lighting setups, render to file, drops
     m_outlineActions = new OutlineActions(this); // add, delete, duplicate, rename
     m_status->setSampler(render::samplerKindName(renderSettings.sampler));
+    wireLightMix();
 }
 
 // Declared here so the render controller (a child) is destroyed, and its thread joined, while
@@ -170,6 +175,26 @@ void MainWindow::refreshProperties() {
         m_lightMix->setScene(*scene);
     } else
         m_properties->clear();
+}
+
+// LightMix (issue 21): the A/B split view over the viewport follows every frame, and
+// Lighting → Extract sun turns the environment's sun into a light (one undo step).
+void MainWindow::wireLightMix() {
+    m_lightMixCompare = new LightMixCompare(m_viewport);
+    connect(m_render, &RenderController::frameReady, this, [this](const RenderFrame& frame) {
+        if (auto shown = m_lightMixCompare->showFrame(frame); !shown)
+            statusBar()->showMessage(QString::fromStdString(shown.error().message()), 5000);
+    });
+    QMenu* lighting = menuBar()->addMenu(tr("&Lighting"));
+    QAction* extract = lighting->addAction(tr("Extract sun"));
+    extract->setObjectName("actionExtractSun");
+    connect(extract, &QAction::triggered, this, [this] {
+        auto name = extractSunEdit(*m_document);
+        if (!name) m_errors->report(tr("Extract sun"), QString::fromStdString(name.error().message()));
+    });
+    QAction* endCompare = lighting->addAction(tr("End A/B compare"));
+    endCompare->setObjectName("actionEndCompare");
+    connect(endCompare, &QAction::triggered, m_lightMixCompare, &LightMixCompare::stop);
 }
 
 } // namespace wavelit::editor

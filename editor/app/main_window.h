@@ -19,6 +19,7 @@ class ErrorReporter;
 class OutlinePanel;
 class PropertyPanel;
 class LightMixPanel;
+class LightMixCompare;
 class RenderStatusLabel;
 class SceneDocument;
 class ViewportWidget;
@@ -35,6 +36,7 @@ public:
     OutlinePanel* outline() const { return m_outline; }
     PropertyPanel* properties() const { return m_properties; }
     LightMixPanel* lightMix() const { return m_lightMix; }
+    LightMixCompare* lightMixCompare() const { return m_lightMixCompare; } // A/B (issue 21)
     ErrorReporter* errors() const { return m_errors; }
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
@@ -52,6 +54,7 @@ private:
     void updateTitle();
     void wireRendering();
     void wireViewportHandlers();
+    void wireLightMix(); // LightMix (issue 21): the A/B view, Lighting → Extract sun
     void refreshProperties();
 
     SceneDocument* m_document;
@@ -61,6 +64,7 @@ private:
     OutlinePanel* m_outline;
     PropertyPanel* m_properties;
     LightMixPanel* m_lightMix;
+    LightMixCompare* m_lightMixCompare;
     RenderStatusLabel* m_status;
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;

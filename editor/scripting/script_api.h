@@ -66,6 +66,21 @@ public:
     Q_INVOKABLE bool setMute(const QString& light, bool muted);
     Q_INVOKABLE bool solo(const QString& light);
     Q_INVOKABLE QString frameStatus() const;
+    // LightMix (issue 21): Extract sun and A/B (docs/lightmix.md, script_api_lightmix.cpp).
+    // extractSun: the environment's sun becomes a `sun` light and the map gets a mask, one undo
+    // step; returns the new light's name (throws when the map has no sun).
+    // snapshot: stores the current lighting under `name`. compare(a, b): the A/B split view, each
+    // side a snapshot name, "current" (the open setup, live) or a *.wllight path; both are remixes
+    // of the rendered layers (`wavelit --light-mix`), so a side that differs in more than weights
+    // throws. setCompareWipe: the wipe line, 0..1 (the part showing A). compareMeans: [A, B], each
+    // side's mean luminance at the latest frame. saveCompare: the split view as shown (PNG).
+    Q_INVOKABLE QString extractSun();
+    Q_INVOKABLE bool snapshot(const QString& name);
+    Q_INVOKABLE bool compare(const QString& a, const QString& b);
+    Q_INVOKABLE bool setCompareWipe(double fraction);
+    Q_INVOKABLE QJSValue compareMeans();
+    Q_INVOKABLE bool saveCompare(const QString& path);
+    Q_INVOKABLE bool endCompare();
     Q_INVOKABLE QString scenePath() const;
     Q_INVOKABLE QStringList entities() const; // every outline entry's display name
     Q_INVOKABLE QString environment(const QString& name) const; // an environment variable

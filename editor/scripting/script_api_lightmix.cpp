@@ -1,12 +1,18 @@
 // AppApi's LightMix calls (docs/scripting.md, docs/lightmix.md): mute and solo as ordinary,
-// undoable edits of the lights' `muted` property, and the latest frame's update status.
+// undoable edits of the lights' `muted` property, the latest frame's update status, Extract sun,
+// and the A/B snapshots and split view (app/lightmix_compare.h).
 #include "scripting/script_api.h"
 
+#include "app/extract_sun_edit.h"
+#include "app/lightmix_compare.h"
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "panels/entity_ref.h"
 #include "viewport/render_controller.h"
 
+#include "scene/scene_io.h"
+
+#include <QJSEngine>
 
 namespace wavelit::editor {
 
@@ -26,5 +32,87 @@ bool AppApi::solo(const QString& light) {
 }
 
 QString AppApi::frameStatus() const { return m_window->renderer()->latestFrame().lastUpdate; }
+
+QString AppApi::extractSun() {
+    auto name = extractSunEdit(*m_window->document());
+    if (!name) {
+        fail(QString::fromStdString(name.error().message()));
+        return {};
+    }
+    return QString::fromStdString(*name);
+}
+
+bool AppApi::snapshot(const QString& name) {
+    auto scene = m_window->document()->scene();
+    if (!scene) return fail("snapshot: no scene is open");
+    if (name.isEmpty() || name == "current") return fail("snapshot: '" + name + "' cannot name a snapshot");
+    m_window->lightMixCompare()->snapshot(name, scene->lighting);
+    return true;
+}
+
+bool AppApi::compare(const QString& a, const QString& b) {
+    SceneDocument* document = m_window->document();
+    if (!document->scene()) return fail("compare: no scene is open");
+    LightMixCompare* view = m_window->lightMixCompare();
+    std::array<LightMixCompare::Side, 2> sides;
+    const std::array<QString, 2> names{a, b};
+    for (size_t i = 0; i < 2; ++i) {
+        const QString& name = names[i];
+        if (name == "current") {
+            sides[i] = {name, document->scene()->lighting};
+            const scene::LightingSetup atStart = sides[i].lighting;
+            sides[i].live = [document, atStart] {
+                return document->scene() ? document->scene()->lighting : atStart;
+            };
+        } else if (auto snap = view->snapshotNamed(name)) {
+            sides[i] = {name, *snap};
+        } else if (name.endsWith(".wllight")) {
+            auto setup = scene::loadLightingSetup(name.toStdString());
+            if (!setup) return fail("compare: " + QString::fromStdString(setup.error().message()));
+            sides[i] = {name, *setup};
+        } else {
+            return fail("compare: '" + name + "' is neither \"current\", a snapshot (" +
+                        view->snapshotNames().join(", ") + ") nor a .wllight file");
+        }
+    }
+    view->start(sides[0], sides[1]);
+    const RenderFrame& frame = m_window->renderer()->latestFrame();
+    if (!frame.image) return true; // the first frame composes
+    auto shown = view->showFrame(frame);
+    if (!shown) {
+        view->stop();
+        return fail(QString::fromStdString(shown.error().message()));
+    }
+    return true;
+}
+
+bool AppApi::setCompareWipe(double fraction) {
+    if (!m_window->lightMixCompare()->active()) return fail("setCompareWipe: no A/B compare is showing");
+    m_window->lightMixCompare()->setWipe(fraction);
+    return true;
+}
+
+QJSValue AppApi::compareMeans() {
+    LightMixCompare* view = m_window->lightMixCompare();
+    if (!view->active() || view->composite().isNull()) {
+        fail("compareMeans: no A/B compare frame yet");
+        return {};
+    }
+    QJSValue means = m_engine->newArray(2);
+    means.setProperty(0, view->sideMeans()[0]);
+    means.setProperty(1, view->sideMeans()[1]);
+    return means;
+}
+
+bool AppApi::saveCompare(const QString& path) {
+    const QImage shown = m_window->lightMixCompare()->composite();
+    if (shown.isNull()) return fail("saveCompare: no A/B compare frame yet");
+    return shown.save(path, "PNG") ? true : fail("saveCompare: cannot write " + path);
+}
+
+bool AppApi::endCompare() {
+    m_window->lightMixCompare()->stop();
+    return true;
+}
 
 } // namespace wavelit::editor

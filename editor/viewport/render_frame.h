@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wavelit::editor {
 
@@ -48,6 +49,11 @@ struct RenderFrame {
     int validationMessages = 0; // Vulkan validation messages so far (tests require 0)
     QString lastUpdate;         // what the last scene update rebuilt and uploaded (describeUpdate)
     quint64 generation = 0;
+    // LightMix (--light-mix): the light-group layers the image was mixed from and the scene they
+    // were rendered with (remixBaseScene), so the A/B view (app/lightmix_compare.h) can remix
+    // them with other weights; null without light groups.
+    std::shared_ptr<const std::vector<util::ImageRGB>> layers;
+    std::shared_ptr<const scene::Scene> layersScene;
 };
 
 } // namespace wavelit::editor

@@ -129,7 +129,8 @@ util::Result<util::ImageRGB> RenderWorker::sessionImage() {
     if (!m_sessionOptions.lightGroups) return m_session->image();
     auto layers = m_session->groupImages();
     if (!layers) return layers.error();
-    return render::mixGroupLayers(*layers, m_weights);
+    m_lastLayers = std::make_shared<const std::vector<util::ImageRGB>>(std::move(*layers)); // for A/B
+    return render::mixGroupLayers(*m_lastLayers, m_weights);
 }
 
 bool RenderWorker::startPendingJob() {
@@ -207,6 +208,10 @@ void RenderWorker::publish() {
     frame.generation = m_generation;
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
+    if (m_sessionOptions.lightGroups) {
+        frame.layers = std::move(m_lastLayers);
+        frame.layersScene = m_renderedScene;
+    }
     if (m_remixed)
         frame.lastUpdate = m_remixTimer.isValid()
                                ? QStringLiteral("remixed: no restart (frame in %1 ms)")

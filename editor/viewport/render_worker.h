@@ -104,6 +104,7 @@ private:
     std::vector<glm::vec3> m_weights;
     bool m_remixed = false;
     QElapsedTimer m_remixTimer; // valid while tryRemix publishes (the frame says its cost)
+    std::shared_ptr<const std::vector<util::ImageRGB>> m_lastLayers; // sessionImage's, for the frame
 };
 
 } // namespace wavelit::editor

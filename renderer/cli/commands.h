@@ -14,5 +14,6 @@ int runWavelet(const std::vector<std::string>& args);  // wavelet_command.cpp
 int runBench(const std::vector<std::string>& args);    // bench_command.cpp
 int runMix(const std::vector<std::string>& args);      // mix_command.cpp
 int runRelight(const std::vector<std::string>& args);  // relight_command.cpp
+int runExtractSun(const std::vector<std::string>& args); // extract_sun_command.cpp
 
 } // namespace wavelit::cli

@@ -17,6 +17,7 @@ const char* kUsage =
     "         [--light-groups]   (EXR: beauty R,G,B + one <group>.R,.G,.B layer per light group)\n"
     "  merge PART.exr [PART.exr ...] -o OUT.exr\n"
     "  mix IN.exr -o OUT.exr|png --weights GROUP=W|GROUP=R:G:B[,...] [--exposure EV]\n"
+    "  extract-sun SCENE|SETUP.wllight -o OUT.wllight   (the env's sun as a light + a mask)\n"
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
     "  relight SCENE --edits EDITS.json --out DIR --report R.json [--reference-spp N]\n"
     "         [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]\n"
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
     if (command == "bench") return wavelit::cli::runBench(rest);
     if (command == "mix") return wavelit::cli::runMix(rest);
     if (command == "relight") return wavelit::cli::runRelight(rest);
+    if (command == "extract-sun") return wavelit::cli::runExtractSun(rest);
     std::fprintf(stderr, "wavelit-cli: unknown command '%s'\n%s", command.c_str(), kUsage);
     return 2;
 }

@@ -111,7 +111,7 @@ TEST(ChangeSet, EveryPropertyAppliesInvertsAndNamesItsFactor) {
             ++tested;
         }
     }
-    EXPECT_EQ(tested, 38); // every property in docs/file-formats.md's table (light `group`, `muted`: issue 21; material `anisotropy`, `brdfFile`: issue 16)
+    EXPECT_EQ(tested, 40); // every property in docs/file-formats.md's table (light `group`, `muted`, environment `maskDirection`, `maskRadius`: issue 21; material `anisotropy`, `brdfFile`: issue 16)
 }
 
 TEST(ChangeSet, CostFollowsTheRegistry) {

@@ -164,6 +164,26 @@ std::vector<PropertyInfo> declareEnvironment() {
         .range(0.0, kUnbounded).tip("Radiance scale").cost(ChangeKind::Restart, FactorKind::Environment);
     field(l, K, "tint", "Tint", PropertyType::Color, &Environment::tint).range(0.0, kUnbounded)
         .tip("Per-channel radiance scale").cost(ChangeKind::Restart, FactorKind::Environment);
+    // LightMix "Extract sun" (docs/lightmix.md): the mask is applied where the map is loaded, so a
+    // changed mask drops the loaded image like a changed path does.
+    custom<Environment>(l, K, "maskDirection", "Mask direction", PropertyType::Vec3,
+        [](const Environment& e) { return PropertyValue(e.maskDirection); },
+        [](Environment& e, const PropertyValue& v) {
+            if (e.maskDirection != std::get<glm::vec3>(v)) e.image.reset();
+            e.maskDirection = std::get<glm::vec3>(v);
+        })
+        .range(-1.0, 1.0).omitWhenDefault()
+        .tip("Centre of the masked cap, in the map's own frame (before rotation)")
+        .cost(ChangeKind::Restart, FactorKind::Environment);
+    custom<Environment>(l, K, "maskRadius", "Mask radius", PropertyType::Float,
+        [](const Environment& e) { return PropertyValue(e.maskRadiusDeg); },
+        [](Environment& e, const PropertyValue& v) {
+            if (e.maskRadiusDeg != std::get<float>(v)) e.image.reset();
+            e.maskRadiusDeg = std::get<float>(v);
+        })
+        .unit("deg").range(0.0, 90.0).omitWhenDefault()
+        .tip("Angular radius of the cap whose texels count as black (an extracted sun); 0 = none")
+        .cost(ChangeKind::Restart, FactorKind::Environment);
     return l;
 }
 

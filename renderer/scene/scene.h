@@ -98,6 +98,11 @@ struct Environment {
     float rotationDeg = 0.0f;
     float intensity = 1.0f;
     glm::vec3 tint{1.0f};
+    // LightMix "Extract sun" (docs/lightmix.md, scene/environment_mask.h): a cap of the map, in the
+    // map's own frame, whose texels count as black (their energy became a sun light). `image` is
+    // the map with the mask applied; the file is untouched. maskRadiusDeg 0 = no mask.
+    glm::vec3 maskDirection{0.0f, 1.0f, 0.0f};
+    float maskRadiusDeg = 0.0f;
     std::string extras{};
 };
 

@@ -4,6 +4,7 @@
 // scene_io_lighting.h (lighting bodies and references) and scene_io_paths.h.
 #include "scene/scene_io.h"
 
+#include "scene/environment_mask.h"
 #include "scene/image_io.h"
 #include "scene/load_guard.h"
 #include "scene/mesh_loader.h"
@@ -16,6 +17,9 @@
 #include "scene/scene_validation.h"
 #include "plugins/brdf_table.h"
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -30,13 +34,32 @@ namespace {
 const std::vector<std::string> kSceneKeys = {"format", "version", "name", "camera", "render",
                                              "materials", "objects", "lighting", "extras"};
 
+// An extracted sun's mask (docs/lightmix.md) needs a map to mask and a direction to point at.
+util::Status checkEnvironmentMask(const Environment& env, const std::string& referrer, const std::string& mapWhere) {
+    if (!hasEnvironmentMask(env)) return util::okStatus();
+    const std::string where = mapWhere.substr(0, mapWhere.rfind('/'));
+    if (env.path.empty())
+        return makeError(ErrorKind::Invalid, referrer,
+                         "the environment has a mask (maskRadius " + std::to_string(env.maskRadiusDeg) +
+                             " deg) but no map to mask; remove maskRadius or name a map",
+                         where + "/maskRadius");
+    const glm::vec3 d = env.maskDirection;
+    if (!(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z)) || glm::dot(d, d) < 1e-12f)
+        return makeError(ErrorKind::Invalid, referrer,
+                         "the environment's maskDirection must be a non-zero direction (the centre of the masked cap)",
+                         where + "/maskDirection");
+    return util::okStatus();
+}
+
 util::Status loadEnvironment(Environment& env, const fs::path& base, const std::string& referrer,
                              const std::string& where, LoadReport* report) {
+    if (auto s = checkEnvironmentMask(env, referrer, where); !s) return s;
     if (env.path.empty() || env.image) return util::okStatus();
     auto image = loadImage((base / env.path).lexically_normal().string());
     if (!image) return makeError(image.error().kind, referrer, image.error().message(), where);
     if (report) report->warnings.insert(report->warnings.end(), image->warnings.begin(), image->warnings.end());
-    env.image = std::make_shared<const util::ImageRGB>(std::move(image->image));
+    env.image = std::make_shared<const util::ImageRGB>(hasEnvironmentMask(env) ? applyEnvironmentMask(image->image, env)
+                                                                              : std::move(image->image));
     return util::okStatus();
 }
 
