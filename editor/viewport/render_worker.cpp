@@ -2,10 +2,13 @@
 
 #include "viewport/tone_map.h"
 
+#include "render/session/image_metrics.h"
 #include "render/session/light_remix.h"
 #include "scene/scene_io.h"
 
 #include <QTimer>
+
+#include <cmath>
 
 namespace wavelit::editor {
 namespace {
@@ -205,6 +208,15 @@ void RenderWorker::publish() {
     frame.validationMessages = stats.validationMessages;
     frame.lastUpdate = QString::fromStdString(render::describeUpdate(stats.lastUpdate));
     frame.generation = m_generation;
+    frame.last = m_maxSpp > 0 && frame.samplesPerPixel >= m_maxSpp;
+    // render_frame.h: the error of I_n estimated from the previous frame I_m of this generation.
+    const RenderFrame& previous = m_lastFrame;
+    const int m = previous.samplesPerPixel, n = frame.samplesPerPixel;
+    if (previous.image && previous.generation == m_generation && previous.kind == RenderFrame::Kind::PathTraced &&
+        m > 0 && n > m && previous.image->width == frame.image->width &&
+        previous.image->height == frame.image->height)
+        frame.estimatedRelError =
+            std::sqrt(render::relativeMse(*previous.image, *frame.image) * double(m) / double(n - m));
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
     if (m_remixed)
