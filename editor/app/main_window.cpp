@@ -180,7 +180,8 @@ void MainWindow::wireViewportHandlers() {
     connect(m_cameraHandler, &CameraOrbitHandler::viewMoved, sink, &ViewportEditSink::applyView);
     connect(interaction, &ViewportInteraction::viewRequested, sink,
             [sink](const glm::vec3& p, const glm::vec3& t) { sink->applyView(p, t, kNoGesture); });
-    connect(interaction, &ViewportInteraction::dragActiveChanged, sink, [sink](bool active) {
+    connect(interaction, &ViewportInteraction::dragActiveChanged, sink, [this, sink](bool active) {
+        m_render->setInteractive(active); // drafts while the drag lasts (render_worker.h)
         if (!active) sink->endGesture();
     });
 }

@@ -28,7 +28,9 @@ bool isSun(const scene::Scene& scene, EntityRef ref) {
 
 } // namespace
 
-std::optional<GizmoGeometry> gizmoGeometry(const scene::Scene& scene, EntityRef ref, const ViewProjection& view) {
+std::optional<GizmoGeometry> gizmoGeometry(const scene::Scene& scene, EntityRef ref, const ViewProjection& view,
+                                           float pxScale) {
+    const float axisLength = kAxisLengthPx * pxScale;
     const auto world = handlePosition(scene, ref);
     if (!world) return std::nullopt;
     const auto centre = view.project(*world);
@@ -38,21 +40,21 @@ std::optional<GizmoGeometry> gizmoGeometry(const scene::Scene& scene, EntityRef 
     g.sun = isSun(scene, ref);
     if (g.sun) return g;
     // Axis arrows of a fixed screen length: project a short world step and scale it.
-    const float step = view.worldPerPixel(std::max(view.depth(*world), 1e-3f)) * kAxisLengthPx;
+    const float step = view.worldPerPixel(std::max(view.depth(*world), 1e-3f)) * axisLength;
     for (int a = 0; a < 3; ++a) {
         const auto tip = view.project(*world + kAxes[size_t(a)] * step);
-        if (!tip || glm::length(*tip - *centre) < 0.15f * kAxisLengthPx) continue; // end-on: unusable
-        g.axisTips[size_t(a)] = *centre + glm::normalize(*tip - *centre) * kAxisLengthPx;
+        if (!tip || glm::length(*tip - *centre) < 0.15f * axisLength) continue; // end-on: unusable
+        g.axisTips[size_t(a)] = *centre + glm::normalize(*tip - *centre) * axisLength;
     }
     return g;
 }
 
-GizmoPart hitGizmo(const GizmoGeometry& gizmo, glm::vec2 pixel) {
-    if (glm::length(pixel - gizmo.centre) <= kGizmoGrabPx + 3.0f)
+GizmoPart hitGizmo(const GizmoGeometry& gizmo, glm::vec2 pixel, float pxScale) {
+    if (glm::length(pixel - gizmo.centre) <= (kGizmoGrabPx + 3.0f) * pxScale)
         return gizmo.sun ? GizmoPart::SunSphere : GizmoPart::Centre;
     if (gizmo.sun) return GizmoPart::None;
     GizmoPart best = GizmoPart::None;
-    float bestDistance = kGizmoGrabPx;
+    float bestDistance = kGizmoGrabPx * pxScale;
     for (int a = 0; a < 3; ++a) {
         const auto& tip = gizmo.axisTips[size_t(a)];
         if (!tip) continue;

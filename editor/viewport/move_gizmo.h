@@ -29,9 +29,12 @@ struct GizmoGeometry {
 };
 
 // The handle of `ref` as drawn; nullopt when the entity has no handle or it is behind the camera.
-std::optional<GizmoGeometry> gizmoGeometry(const scene::Scene& scene, EntityRef ref, const ViewProjection& view);
+// Sizes (kAxisLengthPx, kGizmoGrabPx) are screen pixels; `pxScale` is image pixels per screen
+// pixel (the viewport scales the image to fit).
+std::optional<GizmoGeometry> gizmoGeometry(const scene::Scene& scene, EntityRef ref, const ViewProjection& view,
+                                           float pxScale);
 // Which part of the gizmo is under `pixel`.
-GizmoPart hitGizmo(const GizmoGeometry& gizmo, glm::vec2 pixel);
+GizmoPart hitGizmo(const GizmoGeometry& gizmo, glm::vec2 pixel, float pxScale);
 
 // One drag of one part: created at the press with the handle's world position, then asked for
 // the world position (or sun direction) under each later mouse position.

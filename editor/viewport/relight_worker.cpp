@@ -95,8 +95,9 @@ void RelightWorker::step() {
     if (!chained) { // a newly opened scene, or an edit after the preview was dropped
         m_preview.reset();
         m_previewGeneration = 0;
-        if (!job.changes) rebuild();                 // open: build now
-        else m_rebuildTimer->start();                // after the edits quiet down
+        // Built once edits pause, never for a scene just opened: the path tracer's first frames
+        // show it, and a build (seconds) would hold up quitting (shutdown waits for it).
+        if (job.changes) m_rebuildTimer->start();
         return;
     }
     const Handling handling = handlingOf(*job.changes);

@@ -100,11 +100,25 @@ void RenderController::setExposure(float ev) {
                               Qt::QueuedConnection);
 }
 
+void RenderController::setInteractive(bool active) {
+    if (m_shared->interactive.exchange(active) == active || active) return;
+    // The drag ended: a worker that is idle (drafts are done) must wake up for the full session.
+    m_shared->pendingRequests.fetch_add(1);
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->wake(); }, Qt::QueuedConnection);
+}
+
 bool RenderController::passRunning() const { return m_shared->passRunning.load(); }
 
 void RenderController::onFrame(RenderFrame frame) {
     m_shared->framesInFlight.fetch_sub(1);
     if (frame.generation != m_generation || m_shared->cancel.load()) return;
+    if (frame.kind == RenderFrame::Kind::Draft) {
+        // A draft never replaces the preview or the full-size frame of its own edit.
+        if (!(m_displayed.image && m_displayed.generation == frame.generation &&
+              m_displayed.kind != RenderFrame::Kind::Draft))
+            display(std::move(frame));
+        return;
+    }
     m_latest = frame;
     emit frameReady(m_latest);
     // Within one generation the preview stays until the tracer's estimate is as good (header).
@@ -132,6 +146,7 @@ void RenderController::display(RenderFrame frame) {
                             ? double(m_sinceEdit.nsecsElapsed()) * 1e-6
                             : -1.0;
     m_displayed = std::move(frame);
+    ++m_framesDisplayed;
     emit displayFrame(m_displayed);
 }
 

@@ -87,6 +87,10 @@ public:
     // there and re-delivers it through frameReady (no restart, accumulation kept).
     void setExposure(float ev);
     float exposure() const { return m_exposureEv; }
+    // A viewport drag starts (true) or ends: while it lasts the render thread renders
+    // reduced-resolution drafts (render_worker.h); when it ends the full session takes the drag's
+    // edits as one update.
+    void setInteractive(bool active);
     // True while the render thread is inside a pass (tests wait for it).
     bool passRunning() const;
 
@@ -95,6 +99,7 @@ public:
     // The frame the viewport shows now (any kind; msSinceEdit set), and whether it is of the
     // newest job (an edit's first frame has arrived).
     const RenderFrame& displayedFrame() const { return m_displayed; }
+    int framesDisplayed() const { return m_framesDisplayed; } // displayFrame signals so far
     bool displayedIsCurrent() const { return m_displayed.image && m_displayed.generation == m_generation; }
     quint64 generation() const { return m_generation; }
 
@@ -111,6 +116,7 @@ private:
     RelightWorker* m_relight = nullptr;
     RenderFrame m_displayed;
     quint64 m_sceneGeneration = 0; // the job that opened the current scene
+    int m_framesDisplayed = 0;
     QElapsedTimer m_sinceEdit;
 
     void submit(RenderJob job);

@@ -42,17 +42,17 @@ std::optional<glm::vec3> handlePosition(const scene::Scene& scene, EntityRef ref
 }
 
 std::optional<EntityRef> ScenePicker::pick(std::shared_ptr<const scene::Scene> scene, int imageWidth,
-                                           int imageHeight, glm::vec2 pixel) {
+                                           int imageHeight, glm::vec2 pixel, float pxScale) {
     if (!scene) return std::nullopt;
     const ViewProjection view(scene->camera, imageWidth, imageHeight);
-    if (auto light = pickLightHandle(*scene, view, pixel)) return light;
+    if (auto light = pickLightHandle(*scene, view, pixel, pxScale)) return light;
     return pickObject(std::move(scene), view, pixel);
 }
 
 std::optional<EntityRef> ScenePicker::pickLightHandle(const scene::Scene& scene, const ViewProjection& view,
-                                                      glm::vec2 pixel) const {
+                                                      glm::vec2 pixel, float pxScale) const {
     std::optional<EntityRef> best;
-    float bestDistance = kHandlePickRadiusPx;
+    float bestDistance = kHandlePickRadiusPx * pxScale;
     for (const auto& light : scene.lighting.lights) {
         const EntityRef ref{EntityKind::Light, light.id};
         const auto world = handlePosition(scene, ref);

@@ -16,7 +16,7 @@
 
 namespace wavelit::editor {
 
-inline constexpr float kHandlePickRadiusPx = 10.0f; // image pixels around a handle that grab it
+inline constexpr float kHandlePickRadiusPx = 10.0f; // screen pixels round a handle that grab it
 
 // Where an entity's handle is in world space: a light's position (a sun, which has only a
 // direction, sits on a sphere round the camera target: target - direction * sunHandleDistance),
@@ -29,11 +29,11 @@ float sunHandleDistance(const scene::Camera& camera);
 class ScenePicker {
 public:
     // The light whose handle is within kHandlePickRadiusPx of `pixel`, else the object hit first
-    // along the ray, else nullopt (the environment).
+    // along the ray, else nullopt (the environment). `pxScale`: image pixels per screen pixel.
     std::optional<EntityRef> pick(std::shared_ptr<const scene::Scene> scene, int imageWidth,
-                                  int imageHeight, glm::vec2 pixel);
+                                  int imageHeight, glm::vec2 pixel, float pxScale);
     std::optional<EntityRef> pickLightHandle(const scene::Scene& scene, const ViewProjection& view,
-                                             glm::vec2 pixel) const;
+                                             glm::vec2 pixel, float pxScale) const;
     std::optional<EntityRef> pickObject(std::shared_ptr<const scene::Scene> scene, const ViewProjection& view,
                                         glm::vec2 pixel);
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace wavelit::editor {
 namespace {
@@ -52,7 +53,7 @@ std::optional<QPointF> ViewportInteraction::imagePoint(QPointF widgetPoint) cons
 std::optional<EntityRef> ViewportInteraction::pickAt(QPointF point) {
     const QSize size = m_viewport->imageSize();
     if (!m_scene || size.isEmpty()) return std::nullopt;
-    return m_picker.pick(m_scene, size.width(), size.height(), toGlm(point));
+    return m_picker.pick(m_scene, size.width(), size.height(), toGlm(point), m_viewport->imagePixelsPerScreenPixel());
 }
 
 bool ViewportInteraction::frameSelected() {
@@ -111,8 +112,9 @@ bool ViewportInteraction::press(QObject*, QEvent* event) {
     if (mouse->button() == Qt::LeftButton && image && m_selection) {
         const QSize size = m_viewport->imageSize();
         const ViewProjection view(m_scene->camera, size.width(), size.height());
-        if (auto gizmo = gizmoGeometry(*m_scene, *m_selection, view)) {
-            const GizmoPart part = hitGizmo(*gizmo, toGlm(*image));
+        const float pxScale = m_viewport->imagePixelsPerScreenPixel();
+        if (auto gizmo = gizmoGeometry(*m_scene, *m_selection, view, pxScale)) {
+            const GizmoPart part = hitGizmo(*gizmo, toGlm(*image), pxScale);
             if (part != GizmoPart::None) {
                 GizmoDrag drag(part, *m_scene, *m_selection, view, toGlm(*image));
                 if (drag.valid()) {
@@ -140,7 +142,8 @@ bool ViewportInteraction::move(QEvent* event) {
     if (!image || !m_moved) return true;
     if (m_mode == Mode::Environment) {
         // Dragging right turns the environment with the mouse, as a globe under the hand.
-        const float deg = m_envStartDeg + float(image->x() - m_pressImage.x()) * kEnvDegPerPixel;
+        const float deg = m_envStartDeg + float(image->x() - m_pressImage.x()) /
+                                              float(m_viewport->imageSize().width()) * kEnvDegPerImageWidth;
         const float wrapped = std::fmod(std::fmod(deg, 360.0f) + 360.0f, 360.0f);
         emit editRequested({{EntityKind::Environment, scene::kInvalidId}, "rotation", wrapped,
                             m_gestures.current()});

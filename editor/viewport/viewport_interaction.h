@@ -5,8 +5,9 @@
 //                                                   scene_picker.h); empty space clears it;
 //   left-drag on the selection's gizmo              move the light/object (move_gizmo.h), or
 //                                                   turn a sun by dragging its handle;
-//   Ctrl + left-drag                                rotate the environment (kEnvDegPerPixel per
-//                                                   pixel of horizontal motion, image pixels);
+//   Ctrl + left-drag                                rotate the environment: a horizontal drag
+//                                                   across the whole image is
+//                                                   kEnvDegPerImageWidth, whatever the zoom;
 //   F (the viewport focused)                        frame the selection: the camera looks at it
 //                                                   from its current side, an object filling
 //                                                   about 2/3 of the view height;
@@ -31,7 +32,7 @@ namespace wavelit::editor {
 class ViewportWidget;
 
 inline constexpr float kClickSlopPx = 3.0f;    // widget pixels a click may wander
-inline constexpr float kEnvDegPerPixel = 0.5f; // environment yaw per image pixel of drag
+inline constexpr float kEnvDegPerImageWidth = 180.0f; // environment yaw per image width of drag
 
 class ViewportInteraction : public QObject {
     Q_OBJECT

@@ -59,6 +59,11 @@ QPointF ViewportWidget::imageToWidget(QPointF p) const {
     return QPointF(r.x() + p.x() * r.width() / m_display.width(), r.y() + p.y() * r.height() / m_display.height());
 }
 
+float ViewportWidget::imagePixelsPerScreenPixel() const {
+    const QRectF r = imageRect();
+    return r.isEmpty() ? 1.0f : float(m_display.width() / r.width());
+}
+
 void ViewportWidget::setOverlay(std::shared_ptr<const scene::Scene> scene, std::optional<EntityRef> selection) {
     m_overlayScene = std::move(scene);
     m_selection = selection;
@@ -81,7 +86,7 @@ void ViewportWidget::paintOverlay(QPainter& painter) const {
     const scene::Scene& scene = *m_overlayScene;
     const ViewProjection view(scene.camera, m_display.width(), m_display.height());
     auto toWidget = [&](glm::vec2 p) { return imageToWidget(QPointF(p.x, p.y)); };
-    const double scale = imageRect().width() / m_display.width(); // widget pixels per image pixel
+    const float pxScale = imagePixelsPerScreenPixel();
     painter.setRenderHint(QPainter::Antialiasing, true);
     for (const auto& light : scene.lighting.lights) {
         const auto world = handlePosition(scene, {EntityKind::Light, light.id});
@@ -92,7 +97,7 @@ void ViewportWidget::paintOverlay(QPainter& painter) const {
         painter.drawEllipse(toWidget(*p), 4.0, 4.0);
     }
     if (!m_selection) return;
-    const auto gizmo = gizmoGeometry(scene, *m_selection, view);
+    const auto gizmo = gizmoGeometry(scene, *m_selection, view, pxScale);
     if (!gizmo) return;
     const QPointF centre = toWidget(gizmo->centre);
     const QColor axisColours[3] = {QColor(230, 60, 60), QColor(80, 200, 80), QColor(70, 120, 240)};
@@ -103,7 +108,7 @@ void ViewportWidget::paintOverlay(QPainter& painter) const {
     }
     painter.setPen(QPen(Qt::white, 1.5));
     painter.setBrush(Qt::NoBrush);
-    const double r = (kGizmoGrabPx + 3.0) * scale;
+    const double r = kGizmoGrabPx + 3.0; // screen pixels
     if (gizmo->sun)
         painter.drawEllipse(centre, r, r);
     else

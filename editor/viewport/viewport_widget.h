@@ -43,6 +43,8 @@ public:
     QRectF imageRect() const;
     std::optional<QPointF> widgetToImage(QPointF widgetPoint) const;
     QPointF imageToWidget(QPointF imagePoint) const;
+    // Image pixels per screen pixel (the image is scaled to fit); 1 before the first frame.
+    float imagePixelsPerScreenPixel() const;
     // What the overlay draws: the scene's light handles and the selection's gizmo.
     void setOverlay(std::shared_ptr<const scene::Scene> scene, std::optional<EntityRef> selection);
 
