@@ -35,8 +35,12 @@ for (var e = 0; e < edits.length; ++e) {
 }
 if (viewportApi) {
     var w = Number(size), h = Number(size);
+    // The softbox hangs above and behind the camera: for its drag it is brought into view first.
+    app.setProperty("light:softbox", "position", [0.8, 1.2, 0.8]);
+    app.waitForSamples(1, 600);
     app.select("light:softbox");
     var light = app.handleInViewport("light:softbox");
+    console.log("softbox handle at " + light);
     app.select("object:ring");
     var ring = app.handleInViewport("object:ring");
     var drags = [

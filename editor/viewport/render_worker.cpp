@@ -112,11 +112,24 @@ void RenderWorker::step() {
     const bool due = m_sinceFrame.elapsed() >= kFrameIntervalMs &&
                      m_shared->framesInFlight.load() < kMaxFramesInFlight;
     if (first || last || due) publish();
+    // The draft session is created once, right after the first full frame, so an edit's first
+    // draft pays no pipeline compile (a new session compiles its own: 0.3 s to seconds).
+    if (first && wantsDraftSession() && !m_draft.session)
+        if (auto created = m_draft.sync([this] { return interrupted(); }); !created) {
+            m_draftsEnabled = false;
+            m_draft.reset();
+            qWarning("wavelit: reduced-resolution drafts off: %s", qPrintable(toQString(created.error())));
+        }
     if (!last) scheduleStep();
 }
 
+bool RenderWorker::wantsDraftSession() const {
+    return m_draftsEnabled && !m_job.options.lightGroups && m_job.options.width >= 2 * kDraftDivisor &&
+           m_job.options.height >= 2 * kDraftDivisor;
+}
+
 bool RenderWorker::wantDraft() const {
-    if (!m_draftsEnabled || m_job.options.lightGroups || m_job.options.width < 2 * kDraftDivisor) return false;
+    if (!wantsDraftSession()) return false;
     // While a drag lasts (until its draft holds kDraftMaxSpp), and once per edit before the
     // full session's first frame (an edit's first frame comes from the draft).
     if (m_shared->interactive.load()) return m_draftSpp < kDraftMaxSpp;
@@ -127,10 +140,11 @@ render::RenderOptions RenderWorker::draftOptions(const render::RenderOptions& fu
     render::RenderOptions options = full;
     options.width = std::max(1, (full.width + kDraftDivisor - 1) / kDraftDivisor);
     options.height = std::max(1, (full.height + kDraftDivisor - 1) / kDraftDivisor);
-    // The product sampler's tables are what an environment or material edit rebuilds (seconds);
-    // the draft uses MIS, whose environment table is all it rebuilds: unbiased, just noisier.
-    if (options.sampler == render::SamplerKind::Wavelet || options.sampler == render::SamplerKind::Oracle)
-        options.sampler = render::SamplerKind::Mis;
+    // Sampler tables are what an environment or material edit rebuilds (the product tables:
+    // seconds; even MIS rebuilds its environment table on a rotation): the draft samples the
+    // BSDF, which needs none, so no edit rebuilds anything but the BVH refit and the buffers it
+    // touches. Unbiased, noisier under a small bright sun: a draft is a draft.
+    options.sampler = render::SamplerKind::Bsdf;
     options.lightGroups = false;
     return options;
 }

@@ -21,8 +21,8 @@
 // intensity (remixWeights) keeps the session and its samples: the weights change and the frame is
 // re-published at once; any other edit swaps in the new scene.
 //
-// Drafts (issue 14): a second, reduced-resolution session (1/kDraftDivisor per side, MIS instead
-// of the product sampler: no product tables to rebuild) renders while a viewport drag lasts
+// Drafts (issue 14): a second, reduced-resolution session (1/kDraftDivisor per side, BSDF
+// sampling: no sampler tables to rebuild) renders while a viewport drag lasts
 // (RenderShared::interactive) and once after each edit before the full session's first frame,
 // so an edit's first frame costs a 1/16-size pass instead of a table rebuild and a full pass.
 // Its frames (RenderFrame::Kind::Draft) are enlarged to the render size by whole pixels. Each
@@ -96,6 +96,7 @@ private:
     void step();
     bool startPendingJob(); // false after reporting an error
     bool wantDraft() const;
+    bool wantsDraftSession() const; // drafts on and the job's options allow them
     void draftStep();
     void publishDraft();
     static render::RenderOptions draftOptions(const render::RenderOptions& full);

@@ -18,7 +18,9 @@ app.waitForSamples(32, 300);
 var before = app.frameLuminance();
 app.select("light:bulb");
 var from = app.handleInViewport("light:bulb");
-check(from !== null && Math.abs(from[0] - 15.4) < 1 && Math.abs(from[1] - 32) < 1, "bulb handle at " + from);
+// The bulb at depth 3.7 m: 32 - 1.2 / (3.7 tan 30deg) * 32 = 14.02.
+check(from !== null && Math.abs(from[0] - 14.02) < 0.05 && Math.abs(from[1] - 32) < 0.05, "bulb handle at " + from);
+function floorPixel(x) { return 32 + x / (4 * Math.tan(Math.PI / 6)) * 32; } // the floor under x (z = 0)
 // The gizmo's centre moves in the plane facing the camera: 34 image pixels at the bulb's depth
 // (3.7 m, 2 * 3.7 * tan 30deg / 64 = 0.0668 m a pixel) is 2.27 m along +x.
 check(app.dragInViewport(from[0], from[1], from[0] + 34, from[1]), "drag");
@@ -30,9 +32,8 @@ var first = app.waitForFrame(120);
 console.log("first frame after the drag: " + JSON.stringify(first));
 app.waitForSamples(32, 300);
 var after = app.frameLuminance();
-var to = app.handleInViewport("light:bulb");
-var nearNew = regionMean(after, to[0], to[1] + 0, 3) / regionMean(before, to[0], to[1], 3);
-var nearOld = regionMean(after, from[0], from[1], 3) / regionMean(before, from[0], from[1], 3);
+var nearNew = regionMean(after, floorPixel(p[0]), 32, 3) / regionMean(before, floorPixel(p[0]), 32, 3);
+var nearOld = regionMean(after, floorPixel(-1.2), 32, 3) / regionMean(before, floorPixel(-1.2), 32, 3);
 var farTop = regionMean(after, 32, 4, 3) / regionMean(before, 32, 4, 3);
 var farBottom = regionMean(after, 32, 59, 3) / regionMean(before, 32, 59, 3);
 console.log("after/before: near the new position " + nearNew.toFixed(3) + ", near the old " +
