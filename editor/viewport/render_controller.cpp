@@ -132,8 +132,9 @@ void RenderController::onFrame(RenderFrame frame) {
 
 void RenderController::onRelightFrame(RenderFrame frame) {
     if (m_shared->cancel.load() || frame.generation > m_generation) return;
-    // A preview of a generation the tracer has already shown is never better (it handed over).
-    if (frame.generation == m_displayed.generation && m_displayed.kind != RenderFrame::Kind::Relight &&
+    // A preview of a generation the full-size tracer has already shown is never better (it
+    // handed over); it is better than a draft of it.
+    if (frame.generation == m_displayed.generation && m_displayed.kind == RenderFrame::Kind::PathTraced &&
         m_displayed.image)
         return;
     display(std::move(frame));

@@ -115,7 +115,7 @@ void RenderWorker::step() {
     // The draft session is created once, right after the first full frame, so an edit's first
     // draft pays no pipeline compile (a new session compiles its own: 0.3 s to seconds).
     if (first && wantsDraftSession() && !m_draft.session)
-        if (auto created = m_draft.sync([this] { return interrupted(); }); !created) {
+        if (auto created = m_draft.sync([this] { return m_shared->cancel.load(); }); !created) {
             m_draftsEnabled = false;
             m_draft.reset();
             qWarning("wavelit: reduced-resolution drafts off: %s", qPrintable(toQString(created.error())));
@@ -158,7 +158,9 @@ void RenderWorker::draftStep() {
         qWarning("wavelit: reduced-resolution drafts off: %s", qPrintable(why));
         scheduleStep();
     };
-    if (auto status = m_draft.sync([this] { return interrupted(); }); !status)
+    // A draft pass is short (1/16 of the pixels): it is not interrupted by the next edit, else a
+    // drag sending an edit per mouse move would restart it forever and show nothing.
+    if (auto status = m_draft.sync([this] { return m_shared->cancel.load(); }); !status)
         return disable(toQString(status.error()));
     const int before = m_draft.session->samplesPerPixel();
     m_shared->passRunning.store(true);
