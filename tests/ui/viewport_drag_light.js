@@ -14,7 +14,7 @@ function regionMean(lum, cx, cy, r) { // mean luminance of the (2r+1)^2 pixels r
     return sum / n;
 }
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_point_light.wlscene");
-app.waitForSamples(32, 300);
+app.waitForSamples(16, 300);
 var before = app.frameLuminance();
 app.select("light:bulb");
 var from = app.handleInViewport("light:bulb");
@@ -30,7 +30,7 @@ check(Math.abs(p[0] - (-1.2 + 34 * 0.0668)) < 0.05 && Math.abs(p[1] - 0.3) < 1e-
       "bulb position after the drag: " + p);
 var first = app.waitForFrame(120);
 console.log("first frame after the drag: " + JSON.stringify(first));
-app.waitForSamples(32, 300);
+app.waitForSamples(16, 300);
 var after = app.frameLuminance();
 var nearNew = regionMean(after, floorPixel(p[0]), 32, 3) / regionMean(before, floorPixel(p[0]), 32, 3);
 var nearOld = regionMean(after, floorPixel(-1.2), 32, 3) / regionMean(before, floorPixel(-1.2), 32, 3);
