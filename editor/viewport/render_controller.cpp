@@ -124,8 +124,9 @@ void RenderController::onFrame(RenderFrame frame) {
     // Within one generation the preview stays until the tracer's estimate is as good (header).
     const bool previewShown = m_displayed.kind == RenderFrame::Kind::Relight &&
                               m_displayed.generation == frame.generation;
-    const bool handOver = frame.last || (frame.estimatedRelError >= 0.0 &&
-                                         frame.estimatedRelError <= kPreviewRelError);
+    // An exposure change re-maps the tracer's frame; the preview on screen would keep the old one.
+    const bool handOver = frame.last || frame.displayExposureEv != m_displayed.displayExposureEv ||
+                          (frame.estimatedRelError >= 0.0 && frame.estimatedRelError <= kPreviewRelError);
     if (previewShown && !handOver) return;
     display(std::move(frame));
 }
