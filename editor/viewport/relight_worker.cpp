@@ -89,6 +89,7 @@ void RelightWorker::step() {
     if (!job.scene || !assetsLoaded(*job.scene) || job.options.width <= 0 || job.options.height <= 0) {
         m_preview.reset(); // nothing to preview (the render thread loads dropped assets)
         m_previewGeneration = 0;
+        emit skipped(job.generation);
         return;
     }
     const bool chained = m_preview && job.changes && m_previewGeneration == job.baseGeneration;
@@ -98,6 +99,7 @@ void RelightWorker::step() {
         // Built once edits pause, never for a scene just opened: the path tracer's first frames
         // show it, and a build (seconds) would hold up quitting (shutdown waits for it).
         if (job.changes) m_rebuildTimer->start();
+        emit skipped(job.generation);
         return;
     }
     const Handling handling = handlingOf(*job.changes);
@@ -107,6 +109,7 @@ void RelightWorker::step() {
             m_preview.reset(); // too slow to follow a drag: rebuilt when it ends
             m_previewGeneration = 0;
             m_rebuildTimer->start();
+            emit skipped(job.generation);
             return;
         }
     }
@@ -114,6 +117,7 @@ void RelightWorker::step() {
         m_preview.reset();
         m_previewGeneration = 0;
         m_rebuildTimer->start();
+        emit skipped(job.generation);
         return;
     }
     QElapsedTimer timer;

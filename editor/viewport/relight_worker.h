@@ -47,6 +47,9 @@ public:
 
 signals:
     void frameReady(wavelit::editor::RenderFrame frame);
+    // The preview does not follow this job (none built yet, dropped, too slow for the edit):
+    // the viewport should show the path tracer's drafts instead.
+    void skipped(quint64 generation);
 
 private:
     void step();

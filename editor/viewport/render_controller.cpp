@@ -25,6 +25,8 @@ RenderController::RenderController(RenderSettings settings, QObject* parent)
         connect(&m_relightThread, &QThread::finished, m_relight, &QObject::deleteLater);
         connect(m_relight, &RelightWorker::frameReady, this, &RenderController::onRelightFrame,
                 Qt::QueuedConnection);
+        connect(m_relight, &RelightWorker::skipped, this, [this] { m_relightFollows = false; },
+                Qt::QueuedConnection);
         m_relightThread.start();
     }
 }
@@ -111,14 +113,19 @@ bool RenderController::passRunning() const { return m_shared->passRunning.load()
 
 void RenderController::onFrame(RenderFrame frame) {
     m_shared->framesInFlight.fetch_sub(1);
-    if (frame.generation != m_generation || m_shared->cancel.load()) return;
+    if (m_shared->cancel.load()) return;
     if (frame.kind == RenderFrame::Kind::Draft) {
-        // A draft never replaces the preview or the full-size frame of its own edit.
-        if (!(m_displayed.image && m_displayed.generation == frame.generation &&
-              m_displayed.kind != RenderFrame::Kind::Draft))
-            display(std::move(frame));
+        // Drafts of an edit the UI has already moved past are still the newest image during a
+        // drag (display() keeps generations increasing). A draft never replaces the full-size
+        // frame of its own edit, nor a preview that follows the edits.
+        const bool fullShown = m_displayed.image && m_displayed.generation == frame.generation &&
+                               m_displayed.kind == RenderFrame::Kind::PathTraced;
+        const bool previewFollows = m_displayed.image && m_displayed.kind == RenderFrame::Kind::Relight &&
+                                    (m_relightFollows || m_displayed.generation == frame.generation);
+        if (!fullShown && !previewFollows) display(std::move(frame));
         return;
     }
+    if (frame.generation != m_generation) return;
     m_latest = frame;
     emit frameReady(m_latest);
     // Within one generation the preview stays until the tracer's estimate is as good (header).
@@ -133,6 +140,7 @@ void RenderController::onFrame(RenderFrame frame) {
 
 void RenderController::onRelightFrame(RenderFrame frame) {
     if (m_shared->cancel.load() || frame.generation > m_generation) return;
+    m_relightFollows = true;
     // A preview of a generation the full-size tracer has already shown is never better (it
     // handed over); it is better than a draft of it.
     if (frame.generation == m_displayed.generation && m_displayed.kind == RenderFrame::Kind::PathTraced &&

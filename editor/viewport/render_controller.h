@@ -111,6 +111,9 @@ signals:
 
 private:
     void onRelightFrame(RenderFrame frame);
+    // The preview follows the edits (its latest word on a job was a frame, not a skip): a draft
+    // then never replaces it, so a light drag shows the preview, not the two alternating.
+    bool m_relightFollows = false;
     void display(RenderFrame frame);
     QThread m_relightThread;
     RelightWorker* m_relight = nullptr;
