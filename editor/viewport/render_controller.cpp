@@ -117,11 +117,12 @@ void RenderController::onFrame(RenderFrame frame) {
     if (frame.kind == RenderFrame::Kind::Draft) {
         // Drafts of an edit the UI has already moved past are still the newest image during a
         // drag (display() keeps generations increasing). A draft never replaces the full-size
-        // frame of its own edit, nor a preview that follows the edits.
+        // frame of its own edit, nor its preview, nor during a drag a preview that follows it.
         const bool fullShown = m_displayed.image && m_displayed.generation == frame.generation &&
                                m_displayed.kind == RenderFrame::Kind::PathTraced;
         const bool previewFollows = m_displayed.image && m_displayed.kind == RenderFrame::Kind::Relight &&
-                                    (m_relightFollows || m_displayed.generation == frame.generation);
+                                    (m_displayed.generation == frame.generation ||
+                                     (m_relightFollows && m_shared->interactive.load()));
         if (!fullShown && !previewFollows) display(std::move(frame));
         return;
     }
