@@ -14,6 +14,8 @@
 #include "panels/property_panel.h"
 #include "panels/render_status_label.h"
 #include "viewport/camera_orbit_handler.h"
+#include "viewport/viewport_edit_sink.h"
+#include "viewport/viewport_interaction.h"
 #include "viewport/viewport_widget.h"
 
 #include <QCloseEvent>
@@ -22,6 +24,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QTreeWidget>
 
 namespace wavelit::editor {
 namespace {
@@ -143,7 +146,8 @@ void MainWindow::wireDocument() {
 
 void MainWindow::wireRendering() {
     connect(m_viewport, &ViewportWidget::exposureChanged, m_render, &RenderController::setExposure);
-    connect(m_render, &RenderController::frameReady, this, [this](const RenderFrame& frame) {
+    // The viewport shows the newest honest image: the preview or the path tracer (render_controller.h).
+    connect(m_render, &RenderController::displayFrame, this, [this](const RenderFrame& frame) {
         m_viewport->showFrame(frame);
         m_status->showFrame(frame);
     });
@@ -166,6 +170,29 @@ void MainWindow::wireViewportHandlers() {
         const EntityRef camera{EntityKind::Camera, scene::kInvalidId};
         if (auto status = m_document->apply({camera, "position", p, gesture}); !status)
             m_errors->report(tr("Camera"), QString::fromStdString(status.error().message()));
+    });
+    // Viewport (issue 14): picking, gizmos, environment drag, pan and frame (viewport_interaction.h).
+    auto* interaction = new ViewportInteraction(m_viewport, this); // filters before the camera
+    interaction->setObjectName("viewportInteraction");
+    m_viewport->installEventFilter(interaction);
+    auto* sink = new ViewportEditSink(
+        m_document->undoStack(), [this](const PropertyEdit& edit) { return m_document->apply(edit); },
+        [this](const QString& message) { m_errors->report(tr("Viewport"), message); }, this);
+    auto track = [interaction](std::shared_ptr<const scene::Scene> scene) { interaction->setScene(scene); };
+    connect(m_document, &SceneDocument::sceneOpened, interaction, track);
+    connect(m_document, &SceneDocument::sceneEdited, interaction, track);
+    connect(m_document, &SceneDocument::displayChanged, interaction, track);
+    connect(m_outline, &OutlinePanel::entitySelected, interaction, &ViewportInteraction::setSelection);
+    connect(interaction, &ViewportInteraction::selectRequested, this, [this](std::optional<EntityRef> ref) {
+        if (!ref || !m_outline->select(*ref)) m_outline->tree()->clearSelection();
+    });
+    connect(interaction, &ViewportInteraction::editRequested, sink, &ViewportEditSink::applyEdit);
+    connect(m_cameraHandler, &CameraOrbitHandler::viewMoved, sink, &ViewportEditSink::applyView);
+    connect(interaction, &ViewportInteraction::viewRequested, sink,
+            [sink](const glm::vec3& p, const glm::vec3& t) { sink->applyView(p, t, kNoGesture); });
+    connect(interaction, &ViewportInteraction::dragActiveChanged, sink, [this, sink](bool active) {
+        m_render->setInteractive(active); // drafts while the drag lasts (render_worker.h)
+        if (!active) sink->endGesture();
     });
 }
 

@@ -81,6 +81,28 @@ public:
     Q_INVOKABLE QJSValue compareMeans();
     Q_INVOKABLE bool saveCompare(const QString& path);
     Q_INVOKABLE bool endCompare();
+    // Viewport (issue 14)
+    // script_api_viewport.cpp, docs/scripting.md "Viewport". Image points are
+    // the viewport image's pixels ((0, 0) its top-left corner). dragInViewport sends real mouse
+    // events (press, `steps` moves `msPerStep` apart, release) through the viewport's handlers;
+    // modifiers: '+'-joined ctrl, shift, alt, middle, right. pickInViewport clicks and returns the
+    // selected entity ("kind:name", "" for nothing). handleInViewport: where an entity's handle
+    // (a light's position, a sun's handle, an object's origin) is drawn, [x, y] or null.
+    // waitForFrame: waits for the first frame of the latest edit on screen and returns {spp, kind:
+    // "preview"|"pathtraced", source: "relight"|"draft"|"pathtraced", msSinceEdit,
+    // estimatedRelError}. frameLuminance: the latest path-traced (or "displayed") frame's Rec.709
+    // luminance, row-major. undo/redo: one step of the undo stack; false when there is none.
+    // processEvents: lets the editor run for `ms` milliseconds (edits pause, frames arrive).
+    Q_INVOKABLE bool dragInViewport(double x0, double y0, double x1, double y1,
+                                    const QString& modifiers = QString(), int steps = 8, int msPerStep = 0);
+    Q_INVOKABLE QString pickInViewport(double x, double y);
+    Q_INVOKABLE QJSValue handleInViewport(const QString& entity);
+    Q_INVOKABLE QJSValue waitForFrame(double timeoutSeconds = 600.0);
+    Q_INVOKABLE QJSValue frameLuminance(const QString& which = QString());
+    Q_INVOKABLE bool undo();
+    Q_INVOKABLE bool redo();
+    Q_INVOKABLE void processEvents(int ms);
+    Q_INVOKABLE int framesShown() const; // frames the viewport has been given so far (any kind)
     Q_INVOKABLE QString scenePath() const;
     Q_INVOKABLE QStringList entities() const; // every outline entry's display name
     Q_INVOKABLE QString environment(const QString& name) const; // an environment variable

@@ -36,6 +36,20 @@ scene::Camera dollyCamera(const scene::Camera& camera, float factor) {
     return out;
 }
 
+scene::Camera panCamera(const scene::Camera& camera, float right, float up) {
+    const glm::vec3 offset = camera.position - camera.target;
+    const float distance = glm::length(offset);
+    if (distance < kMinDistance) return camera;
+    const glm::vec3 forward = -offset / distance;
+    const glm::vec3 r = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 u = glm::cross(r, forward);
+    const glm::vec3 shift = distance * (right * r + up * u);
+    scene::Camera out = camera;
+    out.position += shift;
+    out.target += shift;
+    return out;
+}
+
 CameraOrbitHandler::CameraOrbitHandler(QObject* parent) : QObject(parent) {}
 
 void CameraOrbitHandler::setCamera(const scene::Camera& camera) {
@@ -48,7 +62,9 @@ bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
     switch (event->type()) {
     case QEvent::MouseButtonPress: {
         auto* mouse = static_cast<QMouseEvent*>(event);
-        if (mouse->button() != Qt::LeftButton) break;
+        if (m_dragging || (mouse->button() != Qt::LeftButton && mouse->button() != Qt::MiddleButton)) break;
+        m_panning = mouse->button() == Qt::MiddleButton || (mouse->modifiers() & Qt::ShiftModifier);
+        m_button = mouse->button();
         m_dragging = true;
         m_gestures.begin();
         m_dragStart = m_camera;
@@ -58,6 +74,12 @@ bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
     case QEvent::MouseMove: {
         if (!m_dragging) break;
         const QPointF delta = static_cast<QMouseEvent*>(event)->position() - m_pressPos;
+        if (m_panning) {
+            // The scene follows the mouse: the camera moves against it.
+            m_camera = panCamera(m_dragStart, -float(delta.x()) * kPanPerPixel, float(delta.y()) * kPanPerPixel);
+            emit viewMoved(m_camera.position, m_camera.target, m_gestures.current());
+            return true;
+        }
         // Dragging right turns the view right: the camera moves the other way round the target.
         m_camera = orbitCamera(m_dragStart, -float(delta.x()) * kOrbitDegPerPixel,
                                float(delta.y()) * kOrbitDegPerPixel);
@@ -65,8 +87,9 @@ bool CameraOrbitHandler::eventFilter(QObject* watched, QEvent* event) {
         return true;
     }
     case QEvent::MouseButtonRelease:
-        if (!m_dragging || static_cast<QMouseEvent*>(event)->button() != Qt::LeftButton) break;
+        if (!m_dragging || static_cast<QMouseEvent*>(event)->button() != m_button) break;
         m_dragging = false;
+        m_panning = false;
         m_gestures.end();
         return true;
     case QEvent::Wheel: {

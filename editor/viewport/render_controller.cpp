@@ -1,5 +1,6 @@
 #include "viewport/render_controller.h"
 
+#include "viewport/relight_worker.h"
 #include "viewport/render_worker.h"
 
 namespace wavelit::editor {
@@ -17,6 +18,17 @@ RenderController::RenderController(RenderSettings settings, QObject* parent)
     connect(m_worker, &RenderWorker::failed, this, &RenderController::onFailed,
             Qt::QueuedConnection);
     m_thread.start();
+    if (m_settings.relightPreview) {
+        m_relightThread.setObjectName("wavelit-relight");
+        m_relight = new RelightWorker(m_shared);
+        m_relight->moveToThread(&m_relightThread);
+        connect(&m_relightThread, &QThread::finished, m_relight, &QObject::deleteLater);
+        connect(m_relight, &RelightWorker::frameReady, this, &RenderController::onRelightFrame,
+                Qt::QueuedConnection);
+        connect(m_relight, &RelightWorker::skipped, this, [this] { m_relightFollows = false; },
+                Qt::QueuedConnection);
+        m_relightThread.start();
+    }
 }
 
 RenderController::~RenderController() { shutdown(); }
@@ -27,6 +39,8 @@ void RenderController::shutdown() {
     // deletes the worker (and with it the session and its device) on the render thread.
     m_thread.quit();
     m_thread.wait();
+    m_relightThread.quit(); // waits for a preview build or edit in progress (not interruptible)
+    m_relightThread.wait();
 }
 
 void RenderController::render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath) {
@@ -60,6 +74,14 @@ void RenderController::submit(RenderJob job) {
     job.options.validation = m_settings.validation;
     job.options.lightGroups = m_settings.lightMix;
     m_latest = RenderFrame{};
+    if (!job.changes) { // a new scene: nothing of the old one stays
+        m_displayed = RenderFrame{};
+        m_sceneGeneration = job.generation;
+    }
+    m_sinceEdit.start();
+    if (m_relight)
+        QMetaObject::invokeMethod(m_relight, [worker = m_relight, job]() mutable { worker->submit(std::move(job)); },
+                                  Qt::QueuedConnection);
     // Counted before it is queued: the running pass stops at its next piece to take it.
     m_shared->pendingRequests.fetch_add(1);
     QMetaObject::invokeMethod(
@@ -80,13 +102,63 @@ void RenderController::setExposure(float ev) {
                               Qt::QueuedConnection);
 }
 
+void RenderController::setInteractive(bool active) {
+    if (m_shared->interactive.exchange(active) == active || active) return;
+    // The drag ended: a worker that is idle (drafts are done) must wake up for the full session.
+    m_shared->pendingRequests.fetch_add(1);
+    QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->wake(); }, Qt::QueuedConnection);
+}
+
 bool RenderController::passRunning() const { return m_shared->passRunning.load(); }
 
 void RenderController::onFrame(RenderFrame frame) {
     m_shared->framesInFlight.fetch_sub(1);
-    if (frame.generation != m_generation || m_shared->cancel.load()) return;
-    m_latest = std::move(frame);
+    if (m_shared->cancel.load()) return;
+    if (frame.kind == RenderFrame::Kind::Draft) {
+        // Drafts of an edit the UI has already moved past are still the newest image during a
+        // drag (display() keeps generations increasing). A draft never replaces the full-size
+        // frame of its own edit, nor its preview, nor during a drag a preview that follows it.
+        const bool fullShown = m_displayed.image && m_displayed.generation == frame.generation &&
+                               m_displayed.kind == RenderFrame::Kind::PathTraced;
+        const bool previewFollows = m_displayed.image && m_displayed.kind == RenderFrame::Kind::Relight &&
+                                    (m_displayed.generation == frame.generation ||
+                                     (m_relightFollows && m_shared->interactive.load()));
+        if (!fullShown && !previewFollows) display(std::move(frame));
+        return;
+    }
+    if (frame.generation != m_generation) return;
+    m_latest = frame;
     emit frameReady(m_latest);
+    // Within one generation the preview stays until the tracer's estimate is as good (header).
+    const bool previewShown = m_displayed.kind == RenderFrame::Kind::Relight &&
+                              m_displayed.generation == frame.generation;
+    // An exposure change re-maps the tracer's frame; the preview on screen would keep the old one.
+    const bool handOver = frame.last || frame.displayExposureEv != m_displayed.displayExposureEv ||
+                          (frame.estimatedRelError >= 0.0 && frame.estimatedRelError <= kPreviewRelError);
+    if (previewShown && !handOver) return;
+    display(std::move(frame));
+}
+
+void RenderController::onRelightFrame(RenderFrame frame) {
+    if (m_shared->cancel.load() || frame.generation > m_generation) return;
+    m_relightFollows = true;
+    // A preview of a generation the full-size tracer has already shown is never better (it
+    // handed over); it is better than a draft of it.
+    if (frame.generation == m_displayed.generation && m_displayed.kind == RenderFrame::Kind::PathTraced &&
+        m_displayed.image)
+        return;
+    display(std::move(frame));
+}
+
+void RenderController::display(RenderFrame frame) {
+    if (frame.generation < m_sceneGeneration) return; // of a scene no longer open
+    if (m_displayed.image && frame.generation < m_displayed.generation) return; // older than shown
+    frame.msSinceEdit = frame.generation == m_generation && m_sinceEdit.isValid()
+                            ? double(m_sinceEdit.nsecsElapsed()) * 1e-6
+                            : -1.0;
+    m_displayed = std::move(frame);
+    ++m_framesDisplayed;
+    emit displayFrame(m_displayed);
 }
 
 void RenderController::onFailed(const QString& message, quint64 generation) {

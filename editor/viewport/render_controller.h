@@ -6,6 +6,15 @@
 // stops the running pass within one piece (~40 ms, gpu_path_tracer.h) and joins, so the Vulkan
 // device is still destroyed on the thread that created it (lavapipe and the validation layers do
 // not require that, but a device's objects are created and used only there: one thread, no locks).
+//
+// What the viewport shows (displayFrame, docs/relighting.md §6): a second thread runs the
+// relighting preview (relight_worker.h) on the same jobs. Of the frames both threads deliver the
+// newest generation is shown; within one generation the preview stays until the path tracer's
+// estimated error (RenderFrame::estimatedRelError, from its own samples) drops to
+// kPreviewRelError — the preview's measured relRMSE against converged direct lighting on the
+// bundled scenes is 0.12-0.34 (docs/relighting.md §7), so 0.2 is where the tracer's image is as
+// good — or the tracer stops (--max-spp). frameReady keeps meaning "a path-traced frame of the
+// newest job" (latestFrame, waitForSamples, saveImage).
 #pragma once
 
 #include "viewport/render_frame.h"
@@ -13,6 +22,7 @@
 #include "render/session/render_options.h"
 #include "scene/change_set.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QThread>
 
@@ -21,8 +31,11 @@
 
 namespace wavelit::editor {
 
+class RelightWorker;
 class RenderWorker;
 struct RenderShared;
+
+inline constexpr double kPreviewRelError = 0.2;
 
 struct RenderSettings {
     render::DeviceChoice device = render::DeviceChoice::Auto;
@@ -37,6 +50,8 @@ struct RenderSettings {
     // next frame (render/session/light_remix.h) instead of restarting. Costs groups x pixels x
     // 12 bytes of device memory.
     bool lightMix = false;
+    // The relighting preview thread (relight_worker.h); off: the path tracer alone.
+    bool relightPreview = true;
 };
 
 class RenderController : public QObject {
@@ -72,18 +87,41 @@ public:
     // there and re-delivers it through frameReady (no restart, accumulation kept).
     void setExposure(float ev);
     float exposure() const { return m_exposureEv; }
+    // A viewport drag starts (true) or ends: while it lasts the render thread renders
+    // reduced-resolution drafts (render_worker.h); when it ends the full session takes the drag's
+    // edits as one update.
+    void setInteractive(bool active);
     // True while the render thread is inside a pass (tests wait for it).
     bool passRunning() const;
 
     const RenderSettings& settings() const { return m_settings; }
     const RenderFrame& latestFrame() const { return m_latest; }
+    // The frame the viewport shows now (any kind; msSinceEdit set), and whether it is of the
+    // newest job (an edit's first frame has arrived).
+    const RenderFrame& displayedFrame() const { return m_displayed; }
+    int framesDisplayed() const { return m_framesDisplayed; } // displayFrame signals so far
+    bool displayedIsCurrent() const { return m_displayed.image && m_displayed.generation == m_generation; }
     quint64 generation() const { return m_generation; }
 
 signals:
     void frameReady(const wavelit::editor::RenderFrame& frame);
     void failed(const QString& message);
+    // The frame the viewport should show (see the class comment).
+    void displayFrame(const wavelit::editor::RenderFrame& frame);
 
 private:
+    void onRelightFrame(RenderFrame frame);
+    // The preview follows the edits (its latest word on a job was a frame, not a skip): a draft
+    // then never replaces it, so a light drag shows the preview, not the two alternating.
+    bool m_relightFollows = false;
+    void display(RenderFrame frame);
+    QThread m_relightThread;
+    RelightWorker* m_relight = nullptr;
+    RenderFrame m_displayed;
+    quint64 m_sceneGeneration = 0; // the job that opened the current scene
+    int m_framesDisplayed = 0;
+    QElapsedTimer m_sinceEdit;
+
     void submit(RenderJob job);
     void onFrame(RenderFrame frame);
     void onFailed(const QString& message, quint64 generation);

@@ -40,6 +40,11 @@ struct RenderJob {
 // go with it. The render thread tone-maps (tone_map.h) with the exposure it was last given
 // (RenderController::setExposure); an exposure change re-publishes the same samples re-mapped.
 struct RenderFrame {
+    // Who made it: the path tracer at the render size, the path tracer's reduced-resolution draft
+    // pass (while a drag lasts), or the relighting preview (relight_worker.h). Scripts see the
+    // last two as kind "preview" (docs/scripting.md, app.waitForFrame).
+    enum class Kind { PathTraced, Draft, Relight };
+    Kind kind = Kind::PathTraced;
     std::shared_ptr<const util::ImageRGB> image;
     QImage display;               // toneMap(*image, displayExposureEv); null without an image
     float displayExposureEv = 0.0f;
@@ -54,6 +59,15 @@ struct RenderFrame {
     // them with other weights; null without light groups.
     std::shared_ptr<const std::vector<util::ImageRGB>> layers;
     std::shared_ptr<const scene::Scene> layersScene;
+    // Path traced: the estimated relRMSE of `image` against the converged image (image_metrics.h
+    // relativeMse), from two frames of one generation at m < n spp: E|I_n - I_m|^2 is
+    // sigma^2 (n - m)/(n m) and the error of I_n is sigma^2/n, so relMSE(I_n) ~= relMSE(I_m vs
+    // I_n) * m / (n - m). Negative while unknown (the first frame of a generation).
+    double estimatedRelError = -1.0;
+    bool last = false; // the render stops after this frame (--max-spp reached)
+    // Set by RenderController when the frame is shown: ms from the edit (the render request) to
+    // the frame's arrival on the UI thread.
+    double msSinceEdit = -1.0;
 };
 
 } // namespace wavelit::editor

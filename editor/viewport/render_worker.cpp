@@ -2,21 +2,17 @@
 
 #include "viewport/tone_map.h"
 
+#include "render/session/image_metrics.h"
 #include "render/session/light_remix.h"
 #include "scene/scene_io.h"
 
 #include <QTimer>
 
+#include <algorithm>
+#include <cmath>
+
 namespace wavelit::editor {
 namespace {
-
-// A session can take a new scene (setScene) only when everything it was created with is the same.
-bool sameSessionOptions(const render::RenderOptions& a, const render::RenderOptions& b) {
-    return a.width == b.width && a.height == b.height && a.bounces == b.bounces &&
-           a.seed == b.seed && a.device == b.device && a.sampler == b.sampler &&
-           a.vulkanDevice == b.vulkanDevice && a.validation == b.validation &&
-           a.lightGroups == b.lightGroups;
-}
 
 QString toQString(const util::Error& error) { return QString::fromStdString(error.message()); }
 
@@ -65,6 +61,11 @@ void RenderWorker::retoneMap() {
     emitFrame(std::move(frame));
 }
 
+void RenderWorker::wake() {
+    m_shared->pendingRequests.fetch_sub(1);
+    scheduleStep();
+}
+
 bool RenderWorker::interrupted() const {
     return m_shared->cancel.load() || m_shared->pendingRequests.load() > 0;
 }
@@ -81,18 +82,27 @@ void RenderWorker::scheduleStep() {
 void RenderWorker::step() {
     if (m_shared->cancel.load()) return;
     if (m_pending && !startPendingJob()) return;
-    if (!m_session) return;
-    if (m_maxSpp > 0 && m_session->samplesPerPixel() >= m_maxSpp) return; // idle until a new job
+    if (!m_job.scene) return;
+    if (wantDraft()) {
+        draftStep();
+        return;
+    }
+    if (auto status = m_full.sync([this] { return interrupted(); }); !status) {
+        fail(toQString(status.error()));
+        return;
+    }
+    if (!m_full.session) return;
+    if (m_maxSpp > 0 && m_full.session->samplesPerPixel() >= m_maxSpp) return; // idle until a new job
 
-    const int before = m_session->samplesPerPixel();
+    const int before = m_full.session->samplesPerPixel();
     m_shared->passRunning.store(true);
-    const util::Status status = m_session->renderPass();
+    const util::Status status = m_full.session->renderPass();
     m_shared->passRunning.store(false);
     if (!status) {
         fail(toQString(status.error()));
         return;
     }
-    const int spp = m_session->samplesPerPixel();
+    const int spp = m_full.session->samplesPerPixel();
     if (spp == before) { // interrupted: handle the request, then resume the pass
         scheduleStep();
         return;
@@ -102,12 +112,101 @@ void RenderWorker::step() {
     const bool due = m_sinceFrame.elapsed() >= kFrameIntervalMs &&
                      m_shared->framesInFlight.load() < kMaxFramesInFlight;
     if (first || last || due) publish();
+    // The draft session is created once, right after the first full frame, so an edit's first
+    // draft pays no pipeline compile (a new session compiles its own: 0.3 s to seconds).
+    if (first && wantsDraftSession() && !m_draft.session)
+        if (auto created = m_draft.sync([this] { return m_shared->cancel.load(); }); !created) {
+            m_draftsEnabled = false;
+            m_draft.reset();
+            qWarning("wavelit: reduced-resolution drafts off: %s", qPrintable(toQString(created.error())));
+        }
     if (!last) scheduleStep();
 }
 
+bool RenderWorker::wantsDraftSession() const {
+    return m_draftsEnabled && !m_job.options.lightGroups && m_job.options.width >= 2 * kDraftDivisor &&
+           m_job.options.height >= 2 * kDraftDivisor;
+}
+
+bool RenderWorker::wantDraft() const {
+    if (!wantsDraftSession()) return false;
+    // While a drag lasts (until its draft holds kDraftMaxSpp), and once per edit before the
+    // full session's first frame (an edit's first frame comes from the draft).
+    if (m_shared->interactive.load()) return m_draftSpp < kDraftMaxSpp;
+    return m_job.changes.has_value() && !m_draftShown && m_publishedSpp < 0;
+}
+
+render::RenderOptions RenderWorker::draftOptions(const render::RenderOptions& full) {
+    render::RenderOptions options = full;
+    options.width = std::max(1, (full.width + kDraftDivisor - 1) / kDraftDivisor);
+    options.height = std::max(1, (full.height + kDraftDivisor - 1) / kDraftDivisor);
+    // Sampler tables are what an environment or material edit rebuilds (the product tables:
+    // seconds; even MIS rebuilds its environment table on a rotation): the draft samples the
+    // BSDF, which needs none, so no edit rebuilds anything but the BVH refit and the buffers it
+    // touches. Unbiased, noisier under a small bright sun: a draft is a draft.
+    options.sampler = render::SamplerKind::Bsdf;
+    options.lightGroups = false;
+    return options;
+}
+
+void RenderWorker::draftStep() {
+    // A draft that cannot render (no device for a second session, a sampler the device lacks)
+    // turns drafts off; the full session still reports real problems with the scene.
+    auto disable = [this](const QString& why) {
+        m_draftsEnabled = false;
+        m_draft.reset();
+        qWarning("wavelit: reduced-resolution drafts off: %s", qPrintable(why));
+        scheduleStep();
+    };
+    // A draft pass is short (1/16 of the pixels): it is not interrupted by the next edit, else a
+    // drag sending an edit per mouse move would restart it forever and show nothing.
+    if (auto status = m_draft.sync([this] { return m_shared->cancel.load(); }); !status)
+        return disable(toQString(status.error()));
+    const int before = m_draft.session->samplesPerPixel();
+    m_shared->passRunning.store(true);
+    const util::Status status = m_draft.session->renderPass();
+    m_shared->passRunning.store(false);
+    if (!status) return disable(toQString(status.error()));
+    m_draftSpp = m_draft.session->samplesPerPixel();
+    if (m_draftSpp != before) publishDraft();
+    scheduleStep();
+}
+
+void RenderWorker::publishDraft() {
+    auto image = m_draft.session->image();
+    if (!image) return;
+    const util::ImageRGB& small = image.value();
+    // Nearest-pixel enlargement to the render size: the viewport's image keeps its size (picking,
+    // gizmos) and shows the draft's pixels as blocks, not as a smoothed fake of the full image.
+    const int w = m_job.options.width, h = m_job.options.height;
+    util::ImageRGB large(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            large.at(x, y) = small.at(std::min(x * small.width / w, small.width - 1),
+                                      std::min(y * small.height / h, small.height - 1));
+    const render::RenderStats stats = m_draft.session->stats();
+    RenderFrame frame;
+    frame.kind = RenderFrame::Kind::Draft;
+    frame.image = std::make_shared<const util::ImageRGB>(std::move(large));
+    frame.samplesPerPixel = stats.samplesPerPixel;
+    frame.elapsedSeconds = stats.elapsedSeconds;
+    frame.deviceName = QString::fromStdString(stats.deviceName);
+    frame.validationMessages = stats.validationMessages;
+    frame.lastUpdate = QStringLiteral("draft %1x%2: %3")
+                           .arg(small.width)
+                           .arg(small.height)
+                           .arg(QString::fromStdString(render::describeUpdate(stats.lastUpdate)));
+    frame.generation = m_generation;
+    frame.displayExposureEv = m_shared->exposureEv.load();
+    frame.display = toneMap(*frame.image, frame.displayExposureEv);
+    m_draftShown = true;
+    m_shared->framesInFlight.fetch_add(1);
+    emit frameReady(std::move(frame)); // not m_lastFrame: that is the full session's
+}
+
 bool RenderWorker::tryRemix(const RenderJob& job) {
-    if (!job.options.lightGroups || !m_session || !m_renderedScene || !job.scene ||
-        !sameSessionOptions(m_sessionOptions, job.options))
+    if (!job.options.lightGroups || !m_full.session || m_full.update || !m_renderedScene || !job.scene ||
+        !sameSessionOptions(m_full.options, job.options))
         return false;
     auto weights = render::remixWeights(*m_renderedScene, *job.scene);
     if (!weights) return false;
@@ -115,9 +214,10 @@ bool RenderWorker::tryRemix(const RenderJob& job) {
     m_generation = job.generation;
     m_maxSpp = job.maxSamplesPerPixel;
     m_remixed = true;
+    m_job = job;
     // The next display frame: now, from the samples so far (none yet: the first pass publishes);
     // its status says what it cost (layer read-back, recombination, tone mapping).
-    if (m_session->samplesPerPixel() > 0) {
+    if (m_full.session->samplesPerPixel() > 0) {
         m_remixTimer.start();
         publish();
         m_remixTimer.invalidate();
@@ -126,8 +226,8 @@ bool RenderWorker::tryRemix(const RenderJob& job) {
 }
 
 util::Result<util::ImageRGB> RenderWorker::sessionImage() {
-    if (!m_sessionOptions.lightGroups) return m_session->image();
-    auto layers = m_session->groupImages();
+    if (!m_full.options.lightGroups) return m_full.session->image();
+    auto layers = m_full.session->groupImages();
     if (!layers) return layers.error();
     m_lastLayers = std::make_shared<const std::vector<util::ImageRGB>>(std::move(*layers)); // for A/B
     return render::mixGroupLayers(*m_lastLayers, m_weights);
@@ -143,8 +243,9 @@ bool RenderWorker::startPendingJob() {
     m_publishedSpp = -1;
     m_lastFrame = RenderFrame{};
     if (!job.scene) {
-        m_session.reset();
-        m_sessionGeneration = 0;
+        m_full.reset();
+        m_draft.reset();
+        m_job = RenderJob{};
         return false;
     }
     if (missingAssets(*job.scene)) {
@@ -162,32 +263,16 @@ bool RenderWorker::startPendingJob() {
         m_weights = render::remixWeights(*rendered, *job.scene).value_or(std::vector<glm::vec3>{});
     }
     m_renderedScene = job.options.lightGroups ? rendered : nullptr;
-    if (m_session && sameSessionOptions(m_sessionOptions, job.options)) {
-        // An edit of the scene the session holds updates only what it changed; anything else
-        // (a newly opened scene, a session that missed a job) swaps in the whole scene.
-        // (LightMix sessions hold remixBaseScene, which the change set does not lead from.)
-        const bool incremental = job.changes && m_sessionGeneration != 0 &&
-                                 m_sessionGeneration == job.baseGeneration &&
-                                 !job.options.lightGroups;
-        const util::Status status = incremental ? m_session->applyChanges(*job.scene, *job.changes)
-                                                : m_session->setScene(*rendered);
-        if (!status) {
-            fail(toQString(status.error()));
-            return false;
-        }
-        m_sessionGeneration = job.generation;
-        return true;
-    }
-    m_session.reset(); // release the old device before creating the next one
-    auto created = render::RenderSession::create(*rendered, job.options);
-    if (!created) {
-        fail(toQString(created.error()));
-        return false;
-    }
-    m_session = std::move(created.value());
-    m_session->setInterruptCheck([this] { return interrupted(); });
-    m_sessionOptions = job.options;
-    m_sessionGeneration = job.generation;
+    // Both sessions take the job when they render next (session_slot.h). An edit of the scene a
+    // session holds updates only what it changed; anything else (a newly opened scene, a session
+    // that missed a job) swaps in the whole scene. (LightMix sessions hold remixBaseScene, which
+    // the change set does not lead from.)
+    m_full.queue(rendered, job.options, job.generation, job.changes, job.baseGeneration, !job.options.lightGroups);
+    if (m_draftsEnabled && !job.options.lightGroups)
+        m_draft.queue(job.scene, draftOptions(job.options), job.generation, job.changes, job.baseGeneration, true);
+    m_draftShown = false;
+    m_draftSpp = 0;
+    m_job = std::move(job);
     return true;
 }
 
@@ -197,7 +282,7 @@ void RenderWorker::publish() {
         fail(toQString(image.error()));
         return;
     }
-    const render::RenderStats stats = m_session->stats();
+    const render::RenderStats stats = m_full.session->stats();
     RenderFrame frame;
     frame.image = std::make_shared<const util::ImageRGB>(std::move(image.value()));
     frame.samplesPerPixel = stats.samplesPerPixel;
@@ -206,6 +291,15 @@ void RenderWorker::publish() {
     frame.validationMessages = stats.validationMessages;
     frame.lastUpdate = QString::fromStdString(render::describeUpdate(stats.lastUpdate));
     frame.generation = m_generation;
+    frame.last = m_maxSpp > 0 && frame.samplesPerPixel >= m_maxSpp;
+    // render_frame.h: the error of I_n estimated from the previous frame I_m of this generation.
+    const RenderFrame& previous = m_lastFrame;
+    const int m = previous.samplesPerPixel, n = frame.samplesPerPixel;
+    if (previous.image && previous.generation == m_generation && previous.kind == RenderFrame::Kind::PathTraced &&
+        m > 0 && n > m && previous.image->width == frame.image->width &&
+        previous.image->height == frame.image->height)
+        frame.estimatedRelError =
+            std::sqrt(render::relativeMse(*previous.image, *frame.image) * double(m) / double(n - m));
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
     if (m_sessionOptions.lightGroups) {
@@ -231,8 +325,8 @@ void RenderWorker::emitFrame(RenderFrame frame) {
 void RenderWorker::fail(const QString& message) {
     // A failed session is in an unknown state (device lost, bad scene): drop it; the next job
     // creates a fresh one.
-    m_session.reset();
-    m_sessionGeneration = 0;
+    m_full.reset();
+    m_draft.reset();
     m_renderedScene.reset();
     m_lastFrame = RenderFrame{};
     emit failed(message, m_generation);

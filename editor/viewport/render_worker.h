@@ -21,6 +21,15 @@
 // intensity (remixWeights) keeps the session and its samples: the weights change and the frame is
 // re-published at once; any other edit swaps in the new scene.
 //
+// Drafts (issue 14): a second, reduced-resolution session (1/kDraftDivisor per side, BSDF
+// sampling: no sampler tables to rebuild) renders while a viewport drag lasts
+// (RenderShared::interactive) and once after each edit before the full session's first frame,
+// so an edit's first frame costs a 1/16-size pass instead of a table rebuild and a full pass.
+// Its frames (RenderFrame::Kind::Draft) are enlarged to the render size by whole pixels. Each
+// session takes the jobs it has not seen as one merged update when it renders next
+// (session_slot.h): during a drag the full session does nothing, and when the drag ends it
+// applies the drag's edits at once.
+//
 // Display: the worker tone-maps each published frame (tone_map.h) with RenderShared::exposureEv
 // into RenderFrame::display, so the UI thread only paints. retoneMap() re-publishes the latest
 // frame's samples with the current exposure (a Display edit: no restart, no lost samples).
@@ -31,6 +40,8 @@
 #pragma once
 
 #include "viewport/render_frame.h"
+
+#include "viewport/session_slot.h"
 
 #include "render/session/render_session.h"
 
@@ -53,6 +64,7 @@ struct RenderShared {
     std::atomic<float> exposureEv{0.0f};     // display exposure for tone mapping
     std::atomic<bool> retoneMapQueued{false}; // a retoneMap call is queued (coalesces changes)
     std::atomic<bool> passRunning{false};    // inside RenderSession::renderPass
+    std::atomic<bool> interactive{false};    // a viewport drag lasts: render drafts
 };
 
 class RenderWorker : public QObject {
@@ -60,6 +72,8 @@ class RenderWorker : public QObject {
 public:
     static constexpr int kFrameIntervalMs = 100;
     static constexpr int kMaxFramesInFlight = 2;
+    static constexpr int kDraftDivisor = 4; // render pixels per draft pixel, per side
+    static constexpr int kDraftMaxSpp = 64; // a drag held still this long refines at full size
 
     explicit RenderWorker(std::shared_ptr<RenderShared> shared);
     ~RenderWorker() override;
@@ -70,6 +84,8 @@ public:
     // Same contract: re-tone-maps the latest published frame with RenderShared::exposureEv and
     // publishes it again (if there is one).
     void retoneMap();
+    // Same contract: a drag ended (RenderShared::interactive is false): render at full size.
+    void wake();
 
 signals:
     void frameReady(wavelit::editor::RenderFrame frame);
@@ -79,6 +95,11 @@ private:
     void scheduleStep();
     void step();
     bool startPendingJob(); // false after reporting an error
+    bool wantDraft() const;
+    bool wantsDraftSession() const; // drafts on and the job's options allow them
+    void draftStep();
+    void publishDraft();
+    static render::RenderOptions draftOptions(const render::RenderOptions& full);
     // LightMix: shows `job` by new weights over the session's layers; false when it cannot.
     bool tryRemix(const RenderJob& job);
     util::Result<util::ImageRGB> sessionImage(); // the beauty, or the LightMix weighted sum
@@ -89,9 +110,12 @@ private:
 
     std::shared_ptr<RenderShared> m_shared;
     std::optional<RenderJob> m_pending;
-    std::unique_ptr<render::RenderSession> m_session;
-    render::RenderOptions m_sessionOptions;
-    quint64 m_sessionGeneration = 0; // the job whose scene the session holds; 0: none
+    RenderJob m_job; // the current job (its scene with assets loaded)
+    SessionSlot m_full;  // the path tracer at the render size
+    SessionSlot m_draft; // the reduced-resolution draft
+    bool m_draftsEnabled = true;
+    bool m_draftShown = false; // the draft published a frame of the current job
+    int m_draftSpp = 0;
     quint64 m_generation = 0;
     int m_maxSpp = 0;
     int m_publishedSpp = -1;

@@ -1,5 +1,7 @@
 #include "viewport/viewport_widget.h"
 
+#include "viewport/move_gizmo.h"
+#include "viewport/scene_picker.h"
 #include "viewport/tone_map.h"
 
 #include <QPainter>
@@ -13,6 +15,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
     setObjectName("viewport");
     setMinimumSize(64, 64);
     setAttribute(Qt::WA_OpaquePaintEvent);
+    setFocusPolicy(Qt::ClickFocus); // F frames the selection (viewport_interaction.h)
 }
 
 void ViewportWidget::showFrame(const RenderFrame& frame) {
@@ -37,15 +40,79 @@ void ViewportWidget::setExposure(float ev) {
     emit exposureChanged(ev);
 }
 
+QRectF ViewportWidget::imageRect() const {
+    if (m_display.isNull()) return {};
+    QSize fitted = m_display.size().scaled(size(), Qt::KeepAspectRatio);
+    return QRectF(QPointF((width() - fitted.width()) / 2, (height() - fitted.height()) / 2), fitted);
+}
+
+std::optional<QPointF> ViewportWidget::widgetToImage(QPointF p) const {
+    const QRectF r = imageRect();
+    if (r.isEmpty() || !r.contains(p)) return std::nullopt;
+    return QPointF((p.x() - r.x()) * m_display.width() / r.width(),
+                   (p.y() - r.y()) * m_display.height() / r.height());
+}
+
+QPointF ViewportWidget::imageToWidget(QPointF p) const {
+    const QRectF r = imageRect();
+    if (r.isEmpty()) return p;
+    return QPointF(r.x() + p.x() * r.width() / m_display.width(), r.y() + p.y() * r.height() / m_display.height());
+}
+
+float ViewportWidget::imagePixelsPerScreenPixel() const {
+    const QRectF r = imageRect();
+    return r.isEmpty() ? 1.0f : float(m_display.width() / r.width());
+}
+
+void ViewportWidget::setOverlay(std::shared_ptr<const scene::Scene> scene, std::optional<EntityRef> selection) {
+    m_overlayScene = std::move(scene);
+    m_selection = selection;
+    update();
+}
+
 void ViewportWidget::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), kBackground);
     if (m_display.isNull()) return;
-    QSize fitted = m_display.size().scaled(size(), Qt::KeepAspectRatio);
-    QRect target(QPoint((width() - fitted.width()) / 2, (height() - fitted.height()) / 2), fitted);
+    const QRectF target = imageRect();
     // Enlarging a small preview smoothly blurs noise; nearest keeps the pixels honest.
-    painter.setRenderHint(QPainter::SmoothPixmapTransform, fitted.width() < m_display.width());
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, target.width() < m_display.width());
     painter.drawImage(target, m_display);
+    paintOverlay(painter);
+}
+
+void ViewportWidget::paintOverlay(QPainter& painter) const {
+    if (!m_overlayScene) return;
+    const scene::Scene& scene = *m_overlayScene;
+    const ViewProjection view(scene.camera, m_display.width(), m_display.height());
+    auto toWidget = [&](glm::vec2 p) { return imageToWidget(QPointF(p.x, p.y)); };
+    const float pxScale = imagePixelsPerScreenPixel();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    for (const auto& light : scene.lighting.lights) {
+        const auto world = handlePosition(scene, {EntityKind::Light, light.id});
+        const auto p = world ? view.project(*world) : std::nullopt;
+        if (!p) continue;
+        painter.setPen(QPen(QColor(20, 20, 20), 1.5));
+        painter.setBrush(light.type == scene::LightType::Sun ? QColor(255, 200, 60) : QColor(255, 240, 160));
+        painter.drawEllipse(toWidget(*p), 4.0, 4.0);
+    }
+    if (!m_selection) return;
+    const auto gizmo = gizmoGeometry(scene, *m_selection, view, pxScale);
+    if (!gizmo) return;
+    const QPointF centre = toWidget(gizmo->centre);
+    const QColor axisColours[3] = {QColor(230, 60, 60), QColor(80, 200, 80), QColor(70, 120, 240)};
+    for (size_t a = 0; a < 3; ++a) {
+        if (!gizmo->axisTips[a]) continue;
+        painter.setPen(QPen(axisColours[a], 2.5));
+        painter.drawLine(centre, toWidget(*gizmo->axisTips[a]));
+    }
+    painter.setPen(QPen(Qt::white, 1.5));
+    painter.setBrush(Qt::NoBrush);
+    const double r = kGizmoGrabPx + 3.0; // screen pixels
+    if (gizmo->sun)
+        painter.drawEllipse(centre, r, r);
+    else
+        painter.drawRect(QRectF(centre.x() - r * 0.6, centre.y() - r * 0.6, r * 1.2, r * 1.2));
 }
 
 } // namespace wavelit::editor

@@ -3,13 +3,19 @@
 // state: setExposure emits exposureChanged, which MainWindow connects to
 // RenderController::setExposure; the render thread re-maps the frame it holds and re-delivers it,
 // the render never restarts and the UI thread never tone-maps a large image.
-// Interaction handlers (camera orbit, picking) will be one event-filter class each in viewport/.
+// Interaction handlers are one event-filter class each in viewport/ (camera_orbit_handler.h,
+// viewport_interaction.h); the widget maps between its own and the image's pixel coordinates and
+// draws their overlay: a handle per light and the selection's move gizmo (move_gizmo.h).
 #pragma once
 
+#include "panels/entity_ref.h"
 #include "viewport/render_frame.h"
 
 #include <QImage>
 #include <QWidget>
+
+#include <memory>
+#include <optional>
 
 namespace wavelit::editor {
 
@@ -31,6 +37,17 @@ public:
 
     QSize sizeHint() const override { return {640, 480}; }
 
+    // The displayed image's size in its own pixels (empty before the first frame), where it sits
+    // in the widget, and the mapping between widget and image points (nullopt outside the image).
+    QSize imageSize() const { return m_display.size(); }
+    QRectF imageRect() const;
+    std::optional<QPointF> widgetToImage(QPointF widgetPoint) const;
+    QPointF imageToWidget(QPointF imagePoint) const;
+    // Image pixels per screen pixel (the image is scaled to fit); 1 before the first frame.
+    float imagePixelsPerScreenPixel() const;
+    // What the overlay draws: the scene's light handles and the selection's gizmo.
+    void setOverlay(std::shared_ptr<const scene::Scene> scene, std::optional<EntityRef> selection);
+
 signals:
     void exposureChanged(float ev);
 
@@ -38,7 +55,10 @@ protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
+    void paintOverlay(QPainter& painter) const;
     RenderFrame m_frame;
+    std::shared_ptr<const scene::Scene> m_overlayScene;
+    std::optional<EntityRef> m_selection;
     QImage m_display;
     float m_exposureEv = 0.0f;
 };
