@@ -206,7 +206,11 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         }
     }
     if (!product) lobeMoment = dsBsdfLobeMoment(s, g);
-    double tail = dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
+    // A precomputed bin carries its canonical lobe's tail moment in its header's last word
+    // (binTailMoment, render/gpu/precomputed_products.h): 4^TAIL_LEVEL BRDF evaluations saved.
+    double tail = product && s.massOffset >= 0
+                      ? double(uintBitsToFloat(samplerWords[uint(s.massOffset - 1)])) * double(g.envMean)
+                      : dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
     double a = sqrt(max(tail, 0.0LF)), bm = sqrt(max(lobeMoment, 0.0LF));
     double minEnvShare = sm.mode == kModeOracle ? WAVELIT_ORACLE_MIN_ENV_SHARE : WAVELIT_WAVELET_MIN_ENV_SHARE;
     double envShare = clamp(a / max(a + bm, 1e-300LF), minEnvShare, WAVELIT_MAX_ENV_SHARE);

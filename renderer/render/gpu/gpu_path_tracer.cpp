@@ -90,17 +90,24 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         compile.defines.push_back("WAVELIT_GROUP_LAYERS_BINDING=" +
                                   std::to_string(pt->m_groupBinding + 1));
     }
-    // Measured BRDF tables: the binding after the last (gpu_path_tracer_impl.h).
+    // Measured BRDF tables: the binding after the last (gpu_path_tracer_impl.h), only in kernels
+    // of scenes that read a table. Carried in every kernel, the table plugin's code (double
+    // trigonometry in each of eval, sample and pdf) doubled a lavapipe `wavelet` pass of the
+    // default scene, which has no measured material (issue 12). A scene swap or edit that brings
+    // a table into a kernel without them recreates the tracer (uploadScene: Unsupported).
     pt->m_brdfTableBinding = pt->m_groupBinding + (options.lightGroups ? 2u : 0u);
-    compile.defines.push_back(std::string(kBrdfTableBindingDefine) + "=" +
-                              std::to_string(pt->m_brdfTableBinding));
+    pt->m_brdfTablesCompiled = packed->usesBrdfTables;
+    if (pt->m_brdfTablesCompiled)
+        compile.defines.push_back(std::string(kBrdfTableBindingDefine) + "=" +
+                                  std::to_string(pt->m_brdfTableBinding));
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     auto spirv = compileFileWithBrdfDispatch(shaderPath, compile);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->m_brdfTableBinding + 1, BindingKind::StorageBuffer);
+    std::vector<BindingKind> bindings(pt->m_brdfTableBinding + (pt->m_brdfTablesCompiled ? 1u : 0u),
+                                      BindingKind::StorageBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;
     auto kernel = vk::ComputeKernel::create(

@@ -148,6 +148,7 @@ private:
     // Measured BRDF tables: always bound (the dispatch reads them for `measured` materials).
     vk::Buffer m_brdfTables;
     uint32_t m_brdfTableBinding = 0;
+    bool m_brdfTablesCompiled = false; // the kernel reads measured tables (create)
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;
     std::unique_ptr<vk::CommandRunner> m_runner;

@@ -87,6 +87,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     if (!packed)
         return packed.error();
     GpuSceneData& d = *packed;
+    if (d.usesBrdfTables && !m_brdfTablesCompiled)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               "the kernel was compiled without measured BRDF tables");
     GpuSamplerData samplers;
     SceneSamplerTables samplerTables;
     bool uploadSamplers = false;
@@ -190,7 +193,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     }
     if (m_options.lightGroups)
         if (auto groups = uploadLightGroups(scene); !groups) return groups;
-    if (mask.materials || m_brdfTables.handle() == VK_NULL_HANDLE)
+    if (m_brdfTablesCompiled && (mask.materials || m_brdfTables.handle() == VK_NULL_HANDLE))
         if (auto tables = uploadBrdfTables(d.brdfTables); !tables) return tables;
     for (auto& [i, buffer] : fresh) {
         *uploads[i].target = std::move(buffer);

@@ -128,6 +128,8 @@ util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::
     p.envSize[3] = uint32_t(d.lights.size());
     // As LightSet: 1.0f / float(n), computed here so the shader needs no division.
     p.lightInfo[0] = d.lights.empty() ? 0.0f : 1.0f / float(d.lights.size());
+    for (const auto& [table, offset] : tables->offsetOf)
+        d.usesBrdfTables = d.usesBrdfTables || table != nullptr;
     d.brdfTables = std::move(tables->floats);
     return d;
 }

@@ -77,6 +77,10 @@ struct GpuSceneData {
     std::vector<float> envTexels; // RGB per texel, row-major, row 0 = top (v = 0)
     std::vector<GpuLight> lights; // scene.lighting.lights in order
     std::vector<float> brdfTables; // the measured BRDF tables (gpu_brdf_tables.h), never empty
+    // Some material reads a loaded table: only then does the kernel carry the table-reading
+    // plugins and their binding (a material without its file reads the zero table: f = 0,
+    // what the kernel without them answers too).
+    bool usesBrdfTables = false;
 };
 
 // Errors: a material whose BRDF has no GLSL twin (Unsupported, naming the material).

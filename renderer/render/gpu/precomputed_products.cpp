@@ -1,5 +1,6 @@
 #include "render/gpu/precomputed_products.h"
 
+#include "render/sampling/sampler_constants.h"
 #include "util/image.h"
 
 #include <glm/geometric.hpp>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 
 namespace wavelit::render {
 
@@ -72,6 +74,34 @@ std::vector<float> buildBinPyramid(const SamplerEnvironment& env, const SamplerM
     return out;
 }
 
+double binTailMoment(const SamplerEnvironment& env, const SamplerMaterial& material,
+                     const AxisBin& bin) {
+    const int side = 1 << kTailLevel;
+    const double windowScale = double(1 << bin.window.k);
+    const glm::dvec2 origin = glm::dvec2(bin.window.ox, bin.window.oy) * (0.5 / windowScale);
+    glm::dvec3 t, b;
+    tangentsOf(bin.axis, t, b);
+    const glm::vec3 normalIncidence(0.0f, 0.0f, 1.0f);
+    double sum = 0.0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const glm::dvec2 p((x + 0.5) / side, (y + 0.5) / side);
+            const glm::dvec2 local = (p - origin) * windowScale;
+            if (local.x >= 0.0 && local.x < 1.0 && local.y >= 0.0 && local.y < 1.0)
+                continue;
+            const glm::dvec3 d = wavelet::OctahedralMap{}.toDirection(0, p);
+            const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, b)),
+                              float(glm::dot(d, bin.axis)));
+            if (l.z <= 0.0f)
+                continue;
+            const double fcos = double(
+                util::luminance(material.brdf->eval(material.params, normalIncidence, l) * l.z));
+            sum += double(float(env.cellAverage(kTailLevel, x, y))) * fcos * fcos;
+        }
+    const double fourPi = 4.0 * std::numbers::pi, cellSolidAngle = fourPi / double(side * side);
+    return sum * fourPi * cellSolidAngle;
+}
+
 int axisBinLevel(const MaterialProductTables& tables) {
     return std::max(kAxisBinLevel, tables.policy().binLevel);
 }
@@ -95,7 +125,7 @@ std::vector<uint32_t> buildPrecomputedProducts(const SamplerEnvironment& env,
         out.push_back(uint32_t(bin.window.k));
         out.push_back(uint32_t(bin.window.ox));
         out.push_back(uint32_t(bin.window.oy));
-        out.push_back(0u);
+        out.push_back(std::bit_cast<uint32_t>(float(binTailMoment(env, material, bin))));
         for (float v : buildBinPyramid(env, material, m, bin))
             out.push_back(std::bit_cast<uint32_t>(v));
     }

@@ -41,7 +41,7 @@ namespace wavelit::render {
 inline constexpr int kAxisBinLevel = 5;
 // Glossy hits read their bin's table when cos(view, normal) >= this (45.6 degrees).
 inline constexpr double kMirrorTableMinCos = 0.7;
-// Words per bin before its pyramid: the window's k, ox, oy and a pad.
+// Words per bin before its pyramid: the window's k, ox, oy and the tail moment (binTailMoment).
 inline constexpr int kPrecomputedBinHeaderWords = 4;
 
 struct AxisBin {
@@ -60,7 +60,17 @@ std::vector<AxisBin> axisBins(const MaterialProductTables& tables);
 std::vector<float> buildBinPyramid(const SamplerEnvironment& env, const SamplerMaterial& material,
                                    int m, const AxisBin& bin);
 
-// The GPU words of every bin: its header (k, ox, oy, 0), then its pyramid's float bits.
+// The mixture's share rule needs the second moment of env sampling over the env's coarse tail
+// cells outside the window (direction_sampler.glsl's dsTailMoment: 4^kTailLevel BRDF evaluations
+// per hit). For the bin's canonical lobe it is a constant:
+// sum over those cells of average x (BRDF x cos)^2 x 4 pi x cell solid angle, without the env's
+// mean (the shader multiplies it in). The shares only weigh the techniques (draw and pdf read the
+// same value), so the canonical lobe's figure changes the variance, never the mean.
+double binTailMoment(const SamplerEnvironment& env, const SamplerMaterial& material,
+                     const AxisBin& bin);
+
+// The GPU words of every bin: its header (k, ox, oy, binTailMoment's float bits), then its
+// pyramid's float bits.
 std::vector<uint32_t> buildPrecomputedProducts(const SamplerEnvironment& env,
                                                const SamplerMaterial& material, int m,
                                                const MaterialProductTables& tables);
