@@ -91,7 +91,7 @@ public:
     // waitForFrame: waits for the first frame of the latest edit on screen and returns {spp, kind:
     // "preview"|"pathtraced", source: "relight"|"draft"|"pathtraced", msSinceEdit,
     // estimatedRelError}. frameLuminance: the latest path-traced (or "displayed") frame's Rec.709
-    // luminance, row-major. undo/redo: one step of the undo stack; false when there is none.
+    // luminance, row-major. (undo/redo: in the files block below.)
     // processEvents: lets the editor run for `ms` milliseconds (edits pause, frames arrive).
     Q_INVOKABLE bool dragInViewport(double x0, double y0, double x1, double y1,
                                     const QString& modifiers = QString(), int steps = 8, int msPerStep = 0);
@@ -99,8 +99,6 @@ public:
     Q_INVOKABLE QJSValue handleInViewport(const QString& entity);
     Q_INVOKABLE QJSValue waitForFrame(double timeoutSeconds = 600.0);
     Q_INVOKABLE QJSValue frameLuminance(const QString& which = QString());
-    Q_INVOKABLE bool undo();
-    Q_INVOKABLE bool redo();
     Q_INVOKABLE void processEvents(int ms);
     Q_INVOKABLE int framesShown() const; // frames the viewport has been given so far (any kind)
     Q_INVOKABLE QString scenePath() const;

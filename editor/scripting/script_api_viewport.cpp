@@ -180,18 +180,4 @@ void AppApi::processEvents(int ms) { spin(ms); }
 
 int AppApi::framesShown() const { return m_window->renderer()->framesDisplayed(); }
 
-bool AppApi::undo() {
-    QUndoStack* stack = m_window->document()->undoStack();
-    if (!stack->canUndo()) return false;
-    stack->undo();
-    return true;
-}
-
-bool AppApi::redo() {
-    QUndoStack* stack = m_window->document()->undoStack();
-    if (!stack->canRedo()) return false;
-    stack->redo();
-    return true;
-}
-
 } // namespace wavelit::editor

@@ -302,7 +302,7 @@ void RenderWorker::publish() {
             std::sqrt(render::relativeMse(*previous.image, *frame.image) * double(m) / double(n - m));
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
-    if (m_sessionOptions.lightGroups) {
+    if (m_full.options.lightGroups) {
         frame.layers = std::move(m_lastLayers);
         frame.layersScene = m_renderedScene;
     }
