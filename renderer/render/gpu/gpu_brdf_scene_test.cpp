@@ -160,7 +160,17 @@ TEST(GpuBrdfScene, EveryTwinMatchesTheCpuReferencePerBlock) {
                 ASSERT_TRUE(gpu);
             } else {
                 auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-                ASSERT_TRUE(gpu->setScene(scene, bvh).ok()) << c.brdf;
+                auto swapped = gpu->setScene(scene, bvh);
+                if (!swapped.ok()) {
+                    // Only a measured table refuses the swap: the earlier kernels were compiled
+                    // without the table plugin (GpuSceneData::usesBrdfTables), and the session
+                    // answers Unsupported by recreating the tracer, as here.
+                    ASSERT_EQ(std::string(c.brdf), "measured") << swapped.error().message();
+                    ASSERT_EQ(swapped.error().kind, util::ErrorKind::Unsupported);
+                    EXPECT_EQ(gpu->validationMessageCount(), 0) << samplerKindName(kind);
+                    gpu = create(scene, options(kind, DeviceChoice::Vulkan, 41));
+                    ASSERT_TRUE(gpu);
+                }
             }
             const BlockStats s = renderBlocks(*gpu, kPasses);
             EXPECT_TRUE(s.finite) << c.brdf;
