@@ -19,7 +19,7 @@ util::Result<GpuBrdfTables> packGpuBrdfTables(const scene::Scene& scene) {
         if (offset >= kMaxGpuBrdfTableOffset)
             return util::makeError(util::ErrorKind::Unsupported, table->file,
                                    "material '" + m.name +
-                                       "': too many measured BRDF tables for the Vulkan tracer (this one "
+                                       "': too many BRDF tables for the Vulkan tracer (this one "
                                        "would start at float " + std::to_string(offset) +
                                        ", past 2^24); use fewer or smaller tables, or --device cpu",
                                    "/materials/" + std::to_string(i) + "/brdfFile");

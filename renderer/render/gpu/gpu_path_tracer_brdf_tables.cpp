@@ -9,7 +9,7 @@ namespace wavelit::render::gpu_tracer {
 util::Status GpuPathTracer::uploadBrdfTables(const std::vector<float>& tables) {
     const size_t bytes = tables.size() * sizeof(float);
     if (m_brdfTables.handle() == VK_NULL_HANDLE || m_brdfTables.size() != std::max<size_t>(bytes, 16)) {
-        auto b = upload(nullptr, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "measured BRDF tables");
+        auto b = upload(nullptr, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "BRDF tables");
         if (!b) return b.error();
         m_brdfTables = std::move(b.value());
         m_kernel.bind(m_brdfTableBinding, m_brdfTables);

@@ -89,7 +89,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     GpuSceneData& d = *packed;
     if (d.usesBrdfTables && !m_brdfTablesCompiled)
         return util::makeError(util::ErrorKind::Unsupported, "",
-                               "the kernel was compiled without measured BRDF tables");
+                               "the kernel was compiled without BRDF tables");
     GpuSamplerData samplers;
     SceneSamplerTables samplerTables;
     bool uploadSamplers = false;
@@ -169,9 +169,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (m_options.lightGroups)
             plans.push_back(gpuLightGroupPlan(lightGroupsOf(scene).size(), m_options.width,
                                               m_options.height));
-        plans.push_back({"measured BRDF tables", d.brdfTables.size() * sizeof(float),
-                         d.brdfTables.size(), "floats", "the scene's measured BRDF files",
-                         "use fewer or smaller measured BRDF files"});
+        plans.push_back({"BRDF tables", d.brdfTables.size() * sizeof(float),
+                         d.brdfTables.size(), "floats", "the scene's BRDF table files",
+                         "use fewer or smaller BRDF table files"});
         if (auto fits = checkPlan(std::move(plans)); !fits)
             return fits.error();
     }
