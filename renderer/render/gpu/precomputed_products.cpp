@@ -21,12 +21,26 @@ glm::dvec3 octCentre(int bins, int bx, int by) {
         0, glm::dvec2((bx + 0.5) / bins, (by + 0.5) / bins));
 }
 
-// An orthonormal frame about n (any tangent: the lobe is tabulated at normal incidence).
-void tangentsOf(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-    const glm::dvec3 helper = std::abs(n.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    t = glm::normalize(glm::cross(helper, n));
-    b = glm::cross(n, t);
-}
+// The bin's canonical lobe: its axis as the normal, seen at normal incidence (any tangent frame
+// about the axis will do). brdfCos(d): luminance of BRDF x cos toward env-local d, 0 below the
+// horizon — what the pyramid's leaves and the tail moment both weigh the env by.
+struct CanonicalLobe {
+    const SamplerMaterial& material;
+    glm::dvec3 n, t, b;
+
+    CanonicalLobe(const SamplerMaterial& m, const glm::dvec3& axis) : material(m), n(axis) {
+        const glm::dvec3 helper = std::abs(n.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+        t = glm::normalize(glm::cross(helper, n));
+        b = glm::cross(n, t);
+    }
+    double brdfCos(const glm::dvec3& d) const {
+        const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, b)), float(glm::dot(d, n)));
+        if (l.z <= 0.0f)
+            return 0.0;
+        const glm::vec3 normalIncidence(0.0f, 0.0f, 1.0f);
+        return double(util::luminance(material.brdf->eval(material.params, normalIncidence, l) * l.z));
+    }
+};
 
 } // namespace
 
@@ -38,9 +52,7 @@ std::vector<float> buildBinPyramid(const SamplerEnvironment& env, const SamplerM
     const int side = 1 << m, level = bin.window.k + m;
     const int x0 = bin.window.ox << (m - 1), y0 = bin.window.oy << (m - 1); // global leaf origin
     const double subSide = double(1 << (level + 1));
-    glm::dvec3 t, b;
-    tangentsOf(bin.axis, t, b);
-    const glm::vec3 normalIncidence(0.0f, 0.0f, 1.0f);
+    const CanonicalLobe lobe(material, bin.axis);
     float* leaves = out.data() + levelOffset(m);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
@@ -52,12 +64,7 @@ std::vector<float> buildBinPyramid(const SamplerEnvironment& env, const SamplerM
                     continue;
                 const glm::dvec3 d = env.map().toDirection(
                     0, glm::dvec2((sx + 0.5) / subSide, (sy + 0.5) / subSide));
-                const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, b)),
-                                  float(glm::dot(d, bin.axis)));
-                if (l.z <= 0.0f)
-                    continue;
-                sum += radiance * double(util::luminance(
-                                      material.brdf->eval(material.params, normalIncidence, l) * l.z));
+                sum += radiance * lobe.brdfCos(d);
             }
             leaves[y * side + x] = float(0.25 * sum);
         }
@@ -77,25 +84,15 @@ std::vector<float> buildBinPyramid(const SamplerEnvironment& env, const SamplerM
 double binTailMoment(const SamplerEnvironment& env, const SamplerMaterial& material,
                      const AxisBin& bin) {
     const int side = 1 << kTailLevel;
-    const double windowScale = double(1 << bin.window.k);
-    const glm::dvec2 origin = glm::dvec2(bin.window.ox, bin.window.oy) * (0.5 / windowScale);
-    glm::dvec3 t, b;
-    tangentsOf(bin.axis, t, b);
-    const glm::vec3 normalIncidence(0.0f, 0.0f, 1.0f);
+    const CanonicalLobe lobe(material, bin.axis);
     double sum = 0.0;
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
             const glm::dvec2 p((x + 0.5) / side, (y + 0.5) / side);
-            const glm::dvec2 local = (p - origin) * windowScale;
-            if (local.x >= 0.0 && local.x < 1.0 && local.y >= 0.0 && local.y < 1.0)
-                continue;
-            const glm::dvec3 d = wavelet::OctahedralMap{}.toDirection(0, p);
-            const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, b)),
-                              float(glm::dot(d, bin.axis)));
-            if (l.z <= 0.0f)
-                continue;
-            const double fcos = double(
-                util::luminance(material.brdf->eval(material.params, normalIncidence, l) * l.z));
+            glm::dvec2 local;
+            if (bin.window.toLocal(p, local))
+                continue; // inside the window: the product's part
+            const double fcos = lobe.brdfCos(wavelet::OctahedralMap{}.toDirection(0, p));
             sum += double(float(env.cellAverage(kTailLevel, x, y))) * fcos * fcos;
         }
     const double fourPi = 4.0 * std::numbers::pi, cellSolidAngle = fourPi / double(side * side);
