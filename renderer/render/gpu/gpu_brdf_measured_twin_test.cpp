@@ -9,6 +9,7 @@
 #include "render/gpu/brdf_shader_source.h"
 #include "render/gpu/gpu_brdf_tables.h"
 #include "render/gpu/gpu_path_tracer.h"
+#include "render/testing/brdf_twin_kernel.h"
 #include "render/gpu/gpu_scene_data.h"
 #include "util/rng.h"
 #include "vk/buffer.h"
@@ -27,29 +28,8 @@
 namespace wavelit::render {
 namespace {
 
-// in = (wo.xyz, u1), (tint.rgb, table offset), (u2, type, probe wi.xy); out = (wi.xyz, valid),
-// (f.rgb, pdf), (eval at probe .rgb, pdf at probe). The tables sit at binding 2.
-const char* kKernel = R"(#version 460
-#extension GL_GOOGLE_include_directive : require
-#include "common/brdf.glsl"
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };
-layout(std430, binding = 1) buffer Out { vec4 outputs[]; };
-layout(push_constant) uniform Push { uint count; } pc;
-void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= pc.count) return;
-    vec4 a = inputs[3 * i], b = inputs[3 * i + 1], c = inputs[3 * i + 2];
-    uint type = uint(c.y);
-    vec3 wi, f;
-    float pdf;
-    bool valid = brdfSample(type, b.rgb, b.a, a.xyz, a.w, c.x, wi, f, pdf);
-    vec3 probe = vec3(c.z, c.w, sqrt(max(0.0, 1.0 - c.z * c.z - c.w * c.w)));
-    outputs[3 * i] = vec4(wi, valid ? 1.0 : 0.0);
-    outputs[3 * i + 1] = vec4(f, pdf);
-    outputs[3 * i + 2] = vec4(brdfEval(type, b.rgb, b.a, a.xyz, probe), brdfPdf(type, b.a, a.xyz, probe));
-}
-)";
+// The kernel: render/testing/brdf_twin_kernel.h (the roughness slot holds the table offset;
+// the tables sit at binding 2).
 
 constexpr float kRelTolerance = 1e-4f; // issue 16
 constexpr int kPairs = 10'000;
@@ -78,7 +58,7 @@ TEST(GpuBrdfTwin, MeasuredGlslMatchesCppThroughTheTableBuffer) {
     ASSERT_TRUE(ctx.ok()) << ctx.error().message();
     vk::ShaderCompileOptions options{{gpuShaderDirectory(), gpuPluginDirectory()},
                                      {std::string(kBrdfTableBindingDefine) + "=2"}};
-    auto spirv = compileWithBrdfDispatch(kKernel, "brdf_measured_twin_test.comp", options);
+    auto spirv = compileWithBrdfDispatch(kBrdfTwinKernel, "brdf_measured_twin_test.comp", options);
     ASSERT_TRUE(spirv.ok()) << spirv.error().message();
 
     scene::Scene scene;

@@ -5,6 +5,7 @@
 #include "plugins/brdf.h"
 #include "render/gpu/brdf_shader_source.h"
 #include "render/gpu/gpu_path_tracer.h"
+#include "render/testing/brdf_twin_kernel.h"
 #include "render/gpu/gpu_scene_data.h"
 #include "util/rng.h"
 #include "vk/buffer.h"
@@ -24,31 +25,6 @@
 namespace wavelit::render {
 namespace {
 
-// One invocation per case: in = (wo.xyz, u1), (baseColor.rgb, roughness), (u2, type, probe
-// wi.xy); out = (wi.xyz, valid), (f.rgb, pdf), (eval at probe wi .rgb, pdf at probe wi).
-const char* kKernel = R"(#version 460
-#extension GL_GOOGLE_include_directive : require
-#include "common/brdf.glsl"
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };
-layout(std430, binding = 1) buffer Out { vec4 outputs[]; };
-layout(push_constant) uniform Push { uint count; } pc;
-void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= pc.count) return;
-    vec4 a = inputs[3 * i], b = inputs[3 * i + 1], c = inputs[3 * i + 2];
-    uint type = uint(c.y);
-    vec3 wi, f;
-    float pdf;
-    bool valid = brdfSample(type, b.rgb, b.a, a.xyz, a.w, c.x, wi, f, pdf);
-    vec3 probe = vec3(c.z, c.w, sqrt(max(0.0, 1.0 - c.z * c.z - c.w * c.w)));
-    vec3 fe = brdfEval(type, b.rgb, b.a, a.xyz, probe);
-    float pe = brdfPdf(type, b.a, a.xyz, probe);
-    outputs[3 * i] = vec4(wi, valid ? 1.0 : 0.0);
-    outputs[3 * i + 1] = vec4(f, pdf);
-    outputs[3 * i + 2] = vec4(fe, pe);
-}
-)";
 
 // Relative agreement: GLSL on LLVM and C++ differ only in rounding and contraction of a few
 // dozen operations; the pdf of a sharp lobe (r = 0.02: alpha^2 = 1.6e-7) amplifies the relative
@@ -67,7 +43,7 @@ bool near(float a, float b, float rel) {
 TEST(GpuBrdfTwin, GlslMatchesCppPlugins) {
     auto ctx = vk::Context::create({"", true});
     ASSERT_TRUE(ctx.ok()) << ctx.error().message();
-    auto spirv = compileWithBrdfDispatch(kKernel, "brdf_twin_test.comp",
+    auto spirv = compileWithBrdfDispatch(kBrdfTwinKernel, "brdf_twin_test.comp",
                                          {{gpuShaderDirectory(), gpuPluginDirectory()}, {}});
     ASSERT_TRUE(spirv.ok()) << spirv.error().message();
 
