@@ -36,6 +36,30 @@ TEST(BrdfShaderSource, OneCasePerRegisteredPluginOnItsTypeCode) {
     }
 }
 
+// A kernel compiled for a scene carries only its materials' plugins: their includes and cases,
+// none of the others'.
+TEST(BrdfShaderSource, APluginSetCompilesOnlyItsTwins) {
+    const plugins::Brdf& ggx = *plugins::findBrdf("ggx");
+    const plugins::Brdf& lambert = *plugins::findBrdf("lambert");
+    const BrdfPluginSet set = (BrdfPluginSet(1) << gpuBrdfType(ggx)) | (BrdfPluginSet(1) << gpuBrdfType(lambert));
+    const std::string glsl = brdfDispatchGlsl(set);
+    for (const plugins::Brdf* b : plugins::brdfRegistry()) {
+        if (!plugins::brdfGpuTwinProblem(*b).empty())
+            continue;
+        const bool wanted = b == &ggx || b == &lambert;
+        const std::string include = std::string("#include \"") + b->gpuTwin().snippet + "\"";
+        const std::string code = "if (plugin == " + std::to_string(gpuBrdfType(*b)) + "u) return ";
+        EXPECT_EQ(glsl.find(include) != std::string::npos, wanted) << b->name();
+        EXPECT_EQ(glsl.find(code) != std::string::npos, wanted) << b->name();
+    }
+    const std::string kernel = "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
+                               "#include \"common/brdf.glsl\"\nlayout(local_size_x = 1) in;\n"
+                               "layout(std430, binding = 0) buffer Out { vec4 o[]; };\n"
+                               "void main() { o[0].xyz = brdfEval(0u, vec3(1.0), 0.5, vec3(0, 0, 1), vec3(0, 0, 1)); }\n";
+    auto spirv = compileWithBrdfDispatch(kernel, "two_plugins.comp", includeDirs(), set);
+    EXPECT_TRUE(spirv.ok()) << spirv.error().message();
+}
+
 // A plugin that reads a table (`measured`) is included and dispatched only where the kernel binds
 // the tables buffer (kBrdfTableBindingDefine); a kernel that does not still compiles, without it.
 TEST(BrdfShaderSource, TablePluginsOnlyWhereTheKernelBindsTheTables) {

@@ -102,7 +102,8 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
                                   std::to_string(pt->m_brdfTableBinding));
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
-    auto spirv = compileFileWithBrdfDispatch(shaderPath, compile);
+    pt->m_brdfPluginsCompiled = packed->brdfPlugins;
+    auto spirv = compileFileWithBrdfDispatch(shaderPath, compile, pt->m_brdfPluginsCompiled);
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;

@@ -90,6 +90,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     if (d.usesBrdfTables && !m_brdfTablesCompiled)
         return util::makeError(util::ErrorKind::Unsupported, "",
                                "the kernel was compiled without BRDF tables");
+    if (d.brdfPlugins & ~m_brdfPluginsCompiled)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               "the kernel was compiled without one of the scene's BRDFs");
     GpuSamplerData samplers;
     SceneSamplerTables samplerTables;
     bool uploadSamplers = false;

@@ -86,6 +86,8 @@ util::Result<GpuSceneData> packGpuScene(const scene::Scene& scene, const scene::
         if (!m)
             return m.error();
         d.materials.push_back(*m);
+        const uint32_t plugin = uint32_t(m->emissionType[3]) % plugins::kBrdfTypeCodePlugins;
+        d.brdfPlugins |= plugin < 64 ? BrdfPluginSet(1) << plugin : 0;
     }
 
     // Camera axes exactly as docs/estimator.md "Camera" (and render/reference/cpu_camera.cpp).

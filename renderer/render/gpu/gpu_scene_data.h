@@ -5,6 +5,7 @@
 #pragma once
 
 #include "plugins/brdf.h"
+#include "render/gpu/brdf_shader_source.h"
 #include "render/gpu/gpu_brdf_tables.h"
 #include "render/session/render_options.h"
 #include "scene/bvh.h"
@@ -81,6 +82,9 @@ struct GpuSceneData {
     // plugins and their binding (a material without its file reads the zero table: f = 0,
     // what the kernel without them answers too).
     bool usesBrdfTables = false;
+    // The plugins the materials use (the default material's included): only their twins are
+    // compiled into the scene's kernel (brdf_shader_source.h).
+    BrdfPluginSet brdfPlugins = 0;
 };
 
 // Errors: a material whose BRDF has no GLSL twin (Unsupported, naming the material).

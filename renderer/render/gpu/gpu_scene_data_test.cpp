@@ -32,6 +32,9 @@ TEST(GpuSceneData, PacksMaterialsWithTrailingDefault) {
     scene::Material fallback;
     EXPECT_EQ(d->materials[1].baseColorRoughness[0], fallback.baseColor.r);
     EXPECT_EQ(d->materials[1].emissionType[3], float(gpuBrdfType(*plugins::findBrdf("lambert"))));
+    // The kernel carries the twins of these two plugins only (the default material's included).
+    EXPECT_EQ(d->brdfPlugins, (BrdfPluginSet(1) << gpuBrdfType(*plugins::findBrdf("ggx"))) |
+                                  (BrdfPluginSet(1) << gpuBrdfType(*plugins::findBrdf("lambert"))));
     EXPECT_EQ(d->params.envSize[2], 2u);
     EXPECT_EQ(d->params.size[0], 40u);
     EXPECT_EQ(d->params.size[1], 20u);
