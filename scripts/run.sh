@@ -19,10 +19,17 @@ if [ -n "${WAVELIT_SPP:-}" ]; then budget=(--spp "$WAVELIT_SPP"); else
     budget=(--time "${WAVELIT_RENDER_SECONDS:-10}"); fi
 build/release/renderer/cli/wavelit-cli render "$scene" -o out/ring_on_ground.exr \
     --also out/ring_on_ground.png "${budget[@]}" --report out/ring_on_ground_report.json "$@"
-# Speed vs error: every sampler at equal time on the default device against a longer reference
-# (RMSE curves); the oracle is the ideal the wavelet sampler's efficiency is measured against.
+# Speed vs error at equal time on the default device, against the bundled converged reference
+# (resources/references/README.md; without it, `bench` renders a short `mis` one first). The
+# three samplers an artist chooses between by default; WAVELIT_BENCH_SAMPLERS picks others, e.g.
+# all seven with the oracle, the ideal the wavelet sampler's efficiency is measured against
+# (its kernel takes minutes to compile on lavapipe the first time).
+reference=resources/references/ring_on_ground_128.exr
+bench_reference=()
+if [ -f "$reference" ]; then bench_reference=(--reference "$reference"); fi
 build/release/renderer/cli/wavelit-cli bench "$scene" --time "${WAVELIT_BENCH_SECONDS:-2}" \
-    --samplers uniform,cosine,bsdf,env,mis,wavelet,oracle --width 128 --height 128 --out out/bench
+    --samplers "${WAVELIT_BENCH_SAMPLERS:-bsdf,mis,wavelet}" --width 128 --height 128 \
+    "${bench_reference[@]}" --out out/bench
 echo "run: images at $(pwd)/out/ring_on_ground.exr and $(pwd)/out/ring_on_ground.png"
 echo "run: render report at $(pwd)/out/ring_on_ground_report.json"
 echo "run: speed/error report at $(pwd)/out/bench/bench.{json,csv,png}"

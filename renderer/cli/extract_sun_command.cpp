@@ -46,7 +46,8 @@ int runExtractSun(const std::vector<std::string>& argv) {
         if (!scene.lightingPath.empty())
             envBase = (fs::path(input).parent_path() / scene.lightingPath).lexically_normal().string();
     }
-    auto extracted = render::extractSun(scene, input);
+    // Errors name the file that describes the environment (a scene's own setup file, if any).
+    auto extracted = render::extractSun(scene, envBase);
     if (!extracted) return reportError(extracted.error());
 
     scene::LightingSetup setup = extracted->scene.lighting;

@@ -1,6 +1,7 @@
 #include "render/lights/extract_sun.h"
 
 #include "scene/environment_mask.h"
+#include "util/path_util.h"
 #include "wavelet/sun_search.h"
 
 #include <glm/geometric.hpp>
@@ -40,7 +41,11 @@ util::Result<ExtractedSun> extractSun(const scene::Scene& input, const std::stri
     auto fail = [&](const std::string& why) {
         std::string reason = "extract sun: ";
         reason += why;
-        return util::makeError(util::ErrorKind::Invalid, sourceFile, reason, "/environment");
+        // Where the environment sits in that file: a setup holds it at the top, a scene under
+        // its inline lighting.
+        const bool setup = util::lowerExtension(sourceFile) == ".wllight";
+        return util::makeError(util::ErrorKind::Invalid, sourceFile, reason,
+                               setup ? "/environment" : "/lighting/environment");
     };
     if (env.path.empty() || !env.image || env.image->empty())
         return fail("the environment is a constant colour, not a map; there is no sun to extract");

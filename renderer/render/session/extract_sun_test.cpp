@@ -122,6 +122,12 @@ TEST(ExtractSun, NoSunIsRefused) {
     auto none = extractSun(constant, "test.wlscene");
     ASSERT_FALSE(none.ok());
     EXPECT_NE(none.error().message().find("constant"), std::string::npos) << none.error().message();
+    // The place is where the environment sits in that kind of file.
+    EXPECT_EQ(none.error().where, "/lighting/environment");
+    auto inSetup = extractSun(constant, "test.wllight");
+    ASSERT_FALSE(inSetup.ok());
+    EXPECT_EQ(inSetup.error().where, "/environment");
+    EXPECT_EQ(inSetup.error().file, "test.wllight");
 }
 
 // The saved mask round-trips through a *.wllight and the loader applies it to the map; a mask
