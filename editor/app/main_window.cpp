@@ -212,6 +212,8 @@ void MainWindow::wireLightMix() {
         if (auto shown = m_lightMixCompare->showFrame(frame); !shown)
             statusBar()->showMessage(QString::fromStdString(shown.error().message()), 5000);
     });
+    connect(m_lightMixCompare, &LightMixCompare::sideRenderFailed, this,
+            [this](const QString& message) { m_errors->report(tr("A/B compare"), message); });
     QMenu* lighting = menuBar()->addMenu(tr("&Lighting"));
     QAction* extract = lighting->addAction(tr("Extract sun"));
     extract->setObjectName("actionExtractSun");
