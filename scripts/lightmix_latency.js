@@ -3,7 +3,7 @@
 // states in the frame it publishes at once ("remixed: no restart (frame in X ms)"): the layers'
 // read-back, their recombination and the tone mapping, on the render thread.
 var spp = app.waitForSamples(2, 600);
-for (var i = 0; i < 8; ++i) {
+for (var i = 0; i < 9; ++i) {
     app.setProperty("light:window", "intensity", 40 + 10 * (i % 2));
     spp = app.waitForSamples(spp, 600); // the remix frame: the samples so far, nothing lost
     console.log("lightmix latency: " + app.frameStatus());

@@ -50,7 +50,8 @@ for setup in city extracted extracted_moved; do
 done
 
 # A/B: the editor's split view between two snapshots of the night setup (warm | cool), remixes
-# of one render (needs the editor, build/rel/editor/wavelit or $WAVELIT).
+# of one render, and warm against the cool setup with the lamp moved (a render side of its own)
+# (needs the editor, build/rel/editor/wavelit or $WAVELIT).
 wavelit=${WAVELIT:-$(dirname "$cli")/../../editor/wavelit}
 if [ -x "$wavelit" ]; then
     WAVELIT_SCRIPT_OUT=$img QT_QPA_PLATFORM=${QT_QPA_PLATFORM:-offscreen} "$wavelit" \

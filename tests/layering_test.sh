@@ -52,7 +52,7 @@ check_render gpu 'render/testing/'
 # never render/ (which links Vulkan) and never vk.
 check renderer/relight 'relight|scene|wavelet|plugins|util'
 check renderer/cli 'cli|relight|render|scene|wavelet|vk|plugins|util'
-check editor 'app|viewport|panels|commands|scripting|editor|render|relight|scene|util'
+check editor 'app|viewport|panels|commands|scripting|lightmix|editor|render|relight|scene|util'
 qt=$(grep -rlnE '#include *<Q[A-Za-z]|#include *<Qt' renderer plugins 2>/dev/null)
 if [ -n "$qt" ]; then
     echo "layering: Qt included below editor/: $qt"

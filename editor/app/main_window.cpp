@@ -6,6 +6,7 @@
 #include "app/extract_sun_edit.h"
 #include "app/file_actions.h"
 #include "app/lightmix_compare.h"
+#include "lightmix/group_edit_sink.h"
 #include "app/outline_actions.h"
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
@@ -135,6 +136,10 @@ void MainWindow::wireDocument() {
     };
     connect(m_properties, &PropertyPanel::editRequested, this, applyEdit);
     connect(m_lightMix, &LightMixPanel::editRequested, this, applyEdit);
+    auto* groupEdits = new GroupEditSink( // LightMix group rows: one change set, one undo step
+        m_document, [this](const QString& message) { m_errors->report(tr("LightMix"), message); }, this);
+    connect(m_lightMix, &LightMixPanel::groupEditRequested, groupEdits, &GroupEditSink::apply);
+    connect(m_lightMix, &LightMixPanel::groupGestureEnded, groupEdits, &GroupEditSink::endGesture);
     connect(m_outline, &OutlinePanel::muteRequested, this, [applyEdit](scene::EntityId id, bool muted) {
         applyEdit({{EntityKind::Light, id}, "muted", muted});
     });
@@ -212,6 +217,8 @@ void MainWindow::wireLightMix() {
         if (auto shown = m_lightMixCompare->showFrame(frame); !shown)
             statusBar()->showMessage(QString::fromStdString(shown.error().message()), 5000);
     });
+    connect(m_lightMixCompare, &LightMixCompare::sideRenderFailed, this,
+            [this](const QString& message) { m_errors->report(tr("A/B compare"), message); });
     QMenu* lighting = menuBar()->addMenu(tr("&Lighting"));
     QAction* extract = lighting->addAction(tr("Extract sun"));
     extract->setObjectName("actionExtractSun");

@@ -70,17 +70,21 @@ public:
     // extractSun: the environment's sun becomes a `sun` light and the map gets a mask, one undo
     // step; returns the new light's name (throws when the map has no sun).
     // snapshot: stores the current lighting under `name`. compare(a, b): the A/B split view, each
-    // side a snapshot name, "current" (the open setup, live) or a *.wllight path; both are remixes
-    // of the rendered layers (`wavelit --light-mix`), so a side that differs in more than weights
-    // throws. setCompareWipe: the wipe line, 0..1 (the part showing A). compareMeans: [A, B], each
+    // side a snapshot name, "current" (the open setup, live) or a *.wllight path (needs
+    // `wavelit --light-mix`); returns each side's mode, {a: "remix"|"render", b: ...}: a remix of
+    // the rendered layers where only weights differ, its own render otherwise. setCompareWipe: the wipe line, 0..1 (the part showing A). compareMeans: [A, B], each
     // side's mean luminance at the latest frame. saveCompare: the split view as shown (PNG).
     Q_INVOKABLE QString extractSun();
     Q_INVOKABLE bool snapshot(const QString& name);
-    Q_INVOKABLE bool compare(const QString& a, const QString& b);
+    Q_INVOKABLE QJSValue compare(const QString& a, const QString& b);
     Q_INVOKABLE bool setCompareWipe(double fraction);
     Q_INVOKABLE QJSValue compareMeans();
     Q_INVOKABLE bool saveCompare(const QString& path);
     Q_INVOKABLE bool endCompare();
+    // --- lightmix3: A/B renders and groups ---
+    // compareSamples: [A, B], each side's samples per pixel (a remix: the viewport's; a render:
+    // its own session's). (script_api_lightmix.cpp)
+    Q_INVOKABLE QJSValue compareSamples();
     // Viewport (issue 14)
     // script_api_viewport.cpp, docs/scripting.md "Viewport". Image points are
     // the viewport image's pixels ((0, 0) its top-left corner). dragInViewport sends real mouse

@@ -4,12 +4,14 @@
 #include "scripting/script_api.h"
 
 #include "app/extract_sun_edit.h"
+#include "lightmix/compare_render_context.h"
 #include "app/lightmix_compare.h"
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "panels/entity_ref.h"
 #include "viewport/render_controller.h"
 
+#include "render/session/light_remix.h"
 #include "scene/scene_io.h"
 
 #include <QJSEngine>
@@ -50,9 +52,9 @@ bool AppApi::snapshot(const QString& name) {
     return true;
 }
 
-bool AppApi::compare(const QString& a, const QString& b) {
+QJSValue AppApi::compare(const QString& a, const QString& b) {
     SceneDocument* document = m_window->document();
-    if (!document->scene()) return fail("compare: no scene is open");
+    if (!document->scene()) return fail("compare: no scene is open"), QJSValue();
     LightMixCompare* view = m_window->lightMixCompare();
     std::array<LightMixCompare::Side, 2> sides;
     const std::array<QString, 2> names{a, b};
@@ -68,22 +70,43 @@ bool AppApi::compare(const QString& a, const QString& b) {
             sides[i] = {name, *snap};
         } else if (name.endsWith(".wllight")) {
             auto setup = scene::loadLightingSetup(name.toStdString());
-            if (!setup) return fail("compare: " + QString::fromStdString(setup.error().message()));
+            if (!setup) return fail("compare: " + QString::fromStdString(setup.error().message())), QJSValue();
             sides[i] = {name, *setup};
         } else {
-            return fail("compare: '" + name + "' is neither \"current\", a snapshot (" +
-                        view->snapshotNames().join(", ") + ") nor a .wllight file");
+            fail("compare: '" + name + "' is neither \"current\", a snapshot (" + view->snapshotNames().join(", ") +
+                 ") nor a .wllight file");
+            return {};
         }
     }
-    view->start(sides[0], sides[1]);
-    const RenderFrame& frame = m_window->renderer()->latestFrame();
-    if (!frame.image) return true; // the first frame composes
-    auto shown = view->showFrame(frame);
-    if (!shown) {
-        view->stop();
-        return fail(QString::fromStdString(shown.error().message()));
-    }
-    return true;
+    const RenderController* renderer = m_window->renderer();
+    const RenderFrame& frame = renderer->latestFrame();
+    if (!renderer->settings().lightMix)
+        return fail("compare: A/B compares remixes of light-group layers: start the editor with --light-mix"),
+               QJSValue();
+    // The scene the viewport renders: the latest frame's, or (before one) the open scene as the
+    // render thread renders it (every light unmuted, render_worker.h).
+    const scene::Scene rendered =
+        frame.layersScene ? *frame.layersScene : render::remixBaseScene(*document->scene());
+    view->start(sides[0], sides[1], rendered, compareRenderContext(*renderer, document->path()));
+    if (frame.image)
+        if (auto shown = view->showFrame(frame); !shown) {
+            view->stop();
+            fail(QString::fromStdString(shown.error().message()));
+            return {};
+        }
+    QJSValue modes = m_engine->newObject();
+    modes.setProperty("a", compareModeName(view->modes()[0]));
+    modes.setProperty("b", compareModeName(view->modes()[1]));
+    return modes;
+}
+
+QJSValue AppApi::compareSamples() {
+    LightMixCompare* view = m_window->lightMixCompare();
+    if (!view->active()) return fail("compareSamples: no A/B compare is showing"), QJSValue();
+    QJSValue samples = m_engine->newArray(2);
+    samples.setProperty(0, view->sideSamples(0));
+    samples.setProperty(1, view->sideSamples(1));
+    return samples;
 }
 
 bool AppApi::setCompareWipe(double fraction) {

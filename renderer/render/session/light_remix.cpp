@@ -2,6 +2,9 @@
 
 #include "scene/scene_compare.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace wavelit::render {
 namespace {
 
@@ -19,6 +22,14 @@ std::optional<glm::vec3> ratio(const glm::vec3& rendered, const glm::vec3& shown
             return std::nullopt;
     }
     return r;
+}
+
+// One group's weight from two of its lights: equal up to float rounding (an editor scales a
+// group's members by one factor, each product rounded on its own).
+bool sameWeight(const glm::vec3& a, const glm::vec3& b) {
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(a[c] - b[c]) > 1e-5f * std::max(std::abs(a[c]), std::abs(b[c]))) return false;
+    return true;
 }
 
 } // namespace
@@ -45,7 +56,7 @@ std::optional<std::vector<glm::vec3>> remixWeights(const scene::Scene& rendered,
         auto w = ratio(emitted(rendered.lighting.lights[i]), emitted(shown.lighting.lights[i]));
         if (!w) return std::nullopt;
         const size_t g = size_t(groups.groupOfLight[i]);
-        if (set[g] && weights[g] != *w) return std::nullopt; // a group scaled unevenly
+        if (set[g] && !sameWeight(weights[g], *w)) return std::nullopt; // a group scaled unevenly
         weights[g] = *w;
         set[g] = true;
     }
@@ -54,7 +65,7 @@ std::optional<std::vector<glm::vec3>> remixWeights(const scene::Scene& rendered,
     auto env = ratio(glm::vec3(re.intensity), glm::vec3(se.intensity));
     if (!env) return std::nullopt;
     const size_t g = size_t(groups.environmentGroup);
-    if (set[g] && weights[g] != *env) return std::nullopt; // a light grouped with the environment
+    if (set[g] && !sameWeight(weights[g], *env)) return std::nullopt; // a light grouped with the environment
     weights[g] = *env;
     return weights;
 }

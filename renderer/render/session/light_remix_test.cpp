@@ -66,6 +66,21 @@ TEST(LightRemix, EverythingElseRestarts) {
     even.lighting.lights[1].intensity *= 2.0f;
     ASSERT_TRUE(remixWeights(grouped, even).has_value());
     EXPECT_EQ((*remixWeights(grouped, even))[0], glm::vec3(2.0f));
+    // One factor applied to each member rounds on its own (an editor's group slider): still one
+    // weight, within float rounding.
+    grouped.lighting.lights[0].intensity = 60.0f;
+    grouped.lighting.lights[1].intensity = 45.0f;
+    scene::Scene third = grouped;
+    bool roundingDiffers = false;
+    for (float f : {1.0f / 3.0f, 0.7f, 1.0822f, 1.4384f, 12.9f}) {
+        third.lighting.lights[0].intensity = 60.0f * f;
+        third.lighting.lights[1].intensity = 45.0f * f;
+        roundingDiffers |= third.lighting.lights[0].intensity / 60.0f != third.lighting.lights[1].intensity / 45.0f;
+        auto w = remixWeights(grouped, third);
+        ASSERT_TRUE(w.has_value()) << f;
+        EXPECT_NEAR((*w)[0].x, f, 1e-5f * f);
+    }
+    EXPECT_TRUE(roundingDiffers); // the case the tolerance is for
 }
 
 // The editor renders remixBaseScene (every light unmuted) and shows the mix: the shown image of a
