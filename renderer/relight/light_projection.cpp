@@ -46,24 +46,29 @@ public:
         while (i > 0 && m_out[i - 1].texel > texel) --i;
         const glm::vec3 unit = glm::normalize(dir);
         const float w = weight.x + weight.y + weight.z;
+        // The sample's point on the light relative to p (its direction alone for the sun): the
+        // entry's shadow ray aims at their weighted mean, which for a rect lies on the light.
+        // (A ray along the texel's centre up to the samples' mean distance overshoots the light
+        // where the texel's centre misses it: under the Cornell box's ceiling, 2 cm above its
+        // light, that put the ceiling in the way of about half the light's texels.)
+        const glm::vec3 point = std::isfinite(distance) ? unit * distance : unit;
         if (i > 0 && m_out[i - 1].texel == texel) {
             m_out[i - 1].weight += weight;
-            m_out[i - 1].distance += distance;
-            m_out[i - 1].direction += unit * w;
-            ++m_counts[i - 1];
+            m_out[i - 1].direction += point * w;
             return;
         }
-        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, unit * w});
-        for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
-        m_counts[i] = 1;
+        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, point * w});
     }
     // The light is smaller than a quarter texel: one sample carries it all.
     void markCompact() { m_compact = true; }
     void finish() {
-        for (size_t i = 0; i < m_out.size(); ++i) {
-            m_out[i].distance /= float(m_counts[i]);
-            const float len = glm::length(m_out[i].direction);
-            m_out[i].direction = len > 0.0f ? m_out[i].direction / len : m_dirs.direction(m_out[i].texel);
+        for (TexelWeight& e : m_out) {
+            // direction holds sum of w x point: the mean point's distance (finite lights) and
+            // its direction.
+            const float w = e.weight.x + e.weight.y + e.weight.z;
+            const float len = glm::length(e.direction);
+            if (std::isfinite(e.distance) && w > 0.0f) e.distance = len / w;
+            e.direction = len > 0.0f ? e.direction / len : m_dirs.direction(e.texel);
         }
         std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
         for (TexelWeight& e : m_out) e.compact = m_compact;
@@ -72,7 +77,6 @@ public:
 private:
     const TexelDirections& m_dirs;
     std::vector<TexelWeight>& m_out;
-    int m_counts[kMaxSide * kMaxSide] = {};
     bool m_compact = false;
 };
 

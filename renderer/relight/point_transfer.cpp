@@ -111,8 +111,7 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
         if (!testBit(s.above, e.texel)) continue;
         bool seen = visible(s, e.texel);
         if (!seen && std::isfinite(e.distance))
-            seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
-                                    e.distance * (1.0f - 1e-3f));
+            seen = !scene::occluded(*ctx.sceneBvh, origin, e.direction, 0.0f, e.distance * (1.0f - 1e-3f));
         if (!seen) continue;
         // A narrow lobe near its mirror direction sees a light smaller than a texel where the
         // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
