@@ -8,8 +8,8 @@
 // with --reference-spp N also relRMSE = sqrt(relative MSE, render/session/image_metrics.h) against
 // the CPU tracer's direct lighting (bounces 1, N spp, MIS sampler) of the edited scene.
 // --preview: preview points per row (default 256, at most the output width; the height follows
-// the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² for a lobe narrower
-// than half a 32² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
+// the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² / 128² for a lobe narrower
+// than half a 32² / 64² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
 // (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles);
 // --coarse-level N: also the coarse-to-fine first answer (relight/coarse_to_fine.h) from a preview
 // on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the

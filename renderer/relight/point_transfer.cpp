@@ -281,7 +281,9 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
         if (glm::dot(dirs.direction(t), p.geometric) > 0.0f && glm::dot(dirs.direction(t), p.shading) > 0.0f)
             setBit(above, t);
     const glm::vec3 origin = rayOrigin(p);
-    const TexelBits self = castOcclusion((*ctx.occluders)[p.object], origin, dirs, above);
+    const ObjectOccluder& own = (*ctx.occluders)[p.object];
+    const bool convex = p.backFace ? own.convexBack : own.convexFront;
+    const TexelBits self = convex ? makeBits(dirs.count()) : castOcclusion(own, origin, dirs, above);
     s.above = above;
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];

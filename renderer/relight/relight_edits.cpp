@@ -122,7 +122,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     for (size_t k : lights) summary.factorsRebuilt.push_back("light:" + m_scene->lighting.lights[k].name);
     for (uint32_t m : materials) summary.factorsRebuilt.push_back("brdf:" + m_scene->materials[m].name);
     for (size_t j : objects) {
-        m_occluders[j] = buildObjectOccluder(*m_scene, j);
+        m_occluders[j] = buildObjectOccluder(*m_scene, j, m_convexity);
         summary.factorsRebuilt.push_back("occlusion:" + m_scene->objects[j].name);
     }
     const bool recast = camera || objectMaterial || !objects.empty();

@@ -48,7 +48,7 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_bvh = scene::buildBvh(*m_scene);
     m_occluders.clear();
     for (size_t j = 0; j < m_scene->objects.size(); ++j)
-        m_occluders.push_back(buildObjectOccluder(*m_scene, j));
+        m_occluders.push_back(buildObjectOccluder(*m_scene, j, m_convexity));
     buildEnvironment();
     m_points = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
     m_states.assign(m_points.size(), PointState{});

@@ -84,6 +84,7 @@ private:
     std::unique_ptr<scene::Scene> m_scene;
     scene::Bvh m_bvh;
     std::vector<ObjectOccluder> m_occluders;
+    ConvexityCache m_convexity; // per mesh, kept across edits
     std::vector<ResolvedMaterial> m_materials;
     EnvironmentFactor m_environment;
     std::shared_ptr<const util::ImageRGB> m_envSource; // reduceEquirect of the environment's image
