@@ -105,14 +105,14 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
         }
 }
 
-void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& light,
+void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& light, const glm::vec3& power,
              const glm::vec3& p) {
     const float area = light.size.x * light.size.y;
     const float len = glm::length(light.direction);
     if (!(area > 0.0f) || !(len > 0.0f)) return;
     const glm::vec3 n = light.direction / len;
     const Basis basis = basisAround(n); // U = normalize(cross(ref, n)), V = cross(n, U)
-    const glm::vec3 radiance = light.color * light.intensity * float(1.0 / (kPi * double(area)));
+    const glm::vec3 radiance = power * float(1.0 / (kPi * double(area)));
     const glm::vec3 toP = p - light.position;
     const float d2 = glm::dot(toP, toP);
     if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
@@ -162,8 +162,17 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
 
 void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
                   std::vector<TexelWeight>& out) {
+    projectLightWithPower(light, light.color * light.intensity, p, dirs, out);
+}
+
+void projectUnitLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                      std::vector<TexelWeight>& out) {
+    projectLightWithPower(light, glm::vec3(1.0f), p, dirs, out);
+}
+
+void projectLightWithPower(const scene::Light& light, const glm::vec3& power, const glm::vec3& p,
+                           const TexelDirections& dirs, std::vector<TexelWeight>& out) {
     Accumulator acc(dirs, out);
-    const glm::vec3 power = light.color * light.intensity;
     const glm::vec3 toLight = light.position - p;
     const float d2 = glm::dot(toLight, toLight);
     switch (light.type) {
@@ -188,7 +197,7 @@ void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDire
         acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
         break;
     }
-    case scene::LightType::Rect: addRect(acc, dirs, light, p); break;
+    case scene::LightType::Rect: addRect(acc, dirs, light, power, p); break;
     case scene::LightType::Sun: {
         const float len = glm::length(light.direction);
         if (!(len > 0.0f)) break;

@@ -48,5 +48,11 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
 // The same into `out` (cleared first), which keeps its capacity between calls.
 void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
                   std::vector<TexelWeight>& out);
+// projectLight(unitPowerLight(light), ...) without copying the light (its name) per point: the
+// same values bit for bit. `power` in place of colour x intensity.
+void projectUnitLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                      std::vector<TexelWeight>& out);
+void projectLightWithPower(const scene::Light& light, const glm::vec3& power, const glm::vec3& p,
+                           const TexelDirections& dirs, std::vector<TexelWeight>& out);
 
 } // namespace wavelit::relight

@@ -24,6 +24,9 @@ util::Result<std::unique_ptr<RelightPreview>> RelightPreview::create(const scene
 }
 
 void RelightPreview::resolveMaterials() {
+    // The lights at unit power, once per scene (not per pixel: a copy holds the light's name).
+    m_unitLights.clear();
+    for (const scene::Light& light : m_scene->lighting.lights) m_unitLights.push_back(unitPowerLight(light));
     m_materials.clear();
     auto resolve = [&](const scene::Material& m) { return resolveMaterial(m, m_dirs.texelRadius()); };
     for (const scene::Material& m : m_scene->materials) m_materials.push_back(resolve(m));
@@ -75,7 +78,7 @@ void RelightPreview::buildEnvironment() {
 
 void RelightPreview::updateCameraLight(size_t k, size_t i, const CameraRays& rays) {
     const int w = m_settings.width;
-    m_cameraLights[k][i] = lightSeenByPixel(unitPowerLight(m_scene->lighting.lights[k]), m_scene->camera, rays,
+    m_cameraLights[k][i] = lightSeenByPixel(m_unitLights[k], m_scene->camera, rays,
                                             int(i % size_t(w)), int(i / size_t(w)), m_points[i].distance);
 }
 

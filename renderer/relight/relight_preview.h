@@ -76,7 +76,7 @@ public:
 private:
     explicit RelightPreview(const RelightSettings& settings);
     void rebuildAll(const scene::Scene& scene);
-    void resolveMaterials();
+    void resolveMaterials(); // and m_unitLights
     glm::vec3 radiance(size_t i, const std::vector<glm::vec3>& lightPowers) const;
 
     RelightSettings m_settings;
@@ -95,6 +95,7 @@ private:
     std::vector<glm::vec3> m_background; // environment seen by missed rays
     // Per light, per pixel: the light seen directly by the camera, per unit power.
     std::vector<std::vector<glm::vec3>> m_cameraLights;
+    std::vector<scene::Light> m_unitLights; // unitPowerLight of each light
     void updateCameraLight(size_t k, size_t pixel, const CameraRays& rays);
 };
 
