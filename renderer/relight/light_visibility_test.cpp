@@ -69,25 +69,36 @@ TEST(RelightLightVisibility, ConvexObjectsSkipSelfRaysExactly) {
     const MeshConvexity valley = meshConvexity(*fold);
     EXPECT_FALSE(valley.front && valley.back);
 
-    const scene::Scene scene = testing::makeRelightScene();
-    RelightSettings settings = testing::smallSettings();
-    settings.width = 40;
-    settings.height = 32;
-    auto preview = RelightPreview::create(scene, settings);
-    ASSERT_TRUE(preview);
-    const TransferContext ctx = (*preview)->context();
-    EXPECT_TRUE((*ctx.occluders)[1].convexFront); // the box
-    size_t checked = 0;
-    for (size_t i = 0; i < (*preview)->points().size(); ++i) {
-        const PreviewPoint& p = (*preview)->points()[i];
-        if (!p.hit) continue;
-        const PointState& s = (*preview)->states()[i];
-        const TexelBits cast = castOcclusion((*ctx.occluders)[p.object], rayOrigin(p), *ctx.dirs, s.above);
-        EXPECT_FALSE(anyBit(cast)) << "point " << i;
-        EXPECT_EQ(s.lit, s.above) << "point " << i;
-        ++checked;
+    // As placed, and mirrored (a negative scale turns the winding: the box's visible faces are
+    // then its triangles' back sides, and convexBack is what applies).
+    for (const float mirror : {1.0f, -1.0f}) {
+        scene::Scene scene = testing::makeRelightScene();
+        scene.objects[1].transform.scale = {mirror, 1.0f, 1.0f};
+        RelightSettings settings = testing::smallSettings();
+        settings.width = 40;
+        settings.height = 32;
+        auto preview = RelightPreview::create(scene, settings);
+        ASSERT_TRUE(preview);
+        const TransferContext ctx = (*preview)->context();
+        EXPECT_EQ((*ctx.occluders)[1].convexFront, mirror > 0.0f); // the box
+        EXPECT_EQ((*ctx.occluders)[1].convexBack, mirror < 0.0f);
+        size_t checked = 0, onBox = 0;
+        for (size_t i = 0; i < (*preview)->points().size(); ++i) {
+            const PreviewPoint& p = (*preview)->points()[i];
+            if (!p.hit) continue;
+            const PointState& s = (*preview)->states()[i];
+            const TexelBits cast = castOcclusion((*ctx.occluders)[p.object], rayOrigin(p), *ctx.dirs, s.above);
+            EXPECT_FALSE(anyBit(cast)) << "point " << i;
+            EXPECT_EQ(s.lit, s.above) << "point " << i;
+            if (p.object == 1) {
+                EXPECT_EQ(p.backFace, mirror < 0.0f) << "point " << i;
+            }
+            onBox += p.object == 1 ? 1 : 0;
+            ++checked;
+        }
+        EXPECT_GT(checked, 500u);
+        EXPECT_GT(onBox, 50u);
     }
-    EXPECT_GT(checked, 500u);
 }
 
 } // namespace
