@@ -25,7 +25,7 @@ for i in 0 1 2 3 4; do
 done
 [ -e "$tmp/previews/edit_5.exr" ] && fail "an EXR for an edit that does not exist"
 for key in '"edits"' '"entity"' '"property"' '"kind"' '"factorsRebuilt"' '"pointsTouched"' \
-           '"incrementalMs"' '"fullRebuildMs"' '"relRMSE": null'; do
+           '"incrementalMs"' '"incrementalCpuMs"' '"fullRebuildMs"' '"relRMSE": null'; do
     grep -qF "$key" "$tmp/r.json" || fail "report lacks $key: $(cat "$tmp/r.json")"
 done
 for kind in environment light material object; do

@@ -8,8 +8,8 @@
 // with --reference-spp N also relRMSE = sqrt(relative MSE, render/session/image_metrics.h) against
 // the CPU tracer's direct lighting (bounces 1, N spp, MIS sampler) of the edited scene.
 // --preview: preview points per row (default 256, at most the output width; the height follows
-// the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² for a lobe narrower
-// than half a 32² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
+// the aspect); --level: the sphere grid 2^N squared (default auto: 32², 64² / 128² for a lobe narrower
+// than half a 32² / 64² texel, relight/sphere_level.h); --keep: Haar coefficients of T per point
 // (default 128); --skip-full-rebuild: no from-scratch build per edit (fullRebuildMs null; for latency profiles);
 // --coarse-level N: also the coarse-to-fine first answer (relight/coarse_to_fine.h) from a preview
 // on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the
@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <optional>
 
@@ -61,6 +62,12 @@ util::Result<util::ImageRGB> directLightingReference(const scene::Scene& scene, 
     while ((*session)->samplesPerPixel() < spp)
         if (auto st = (*session)->renderPass(); !st) return st.error();
     return (*session)->image();
+}
+
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 // Largest |a - b| / max(|b|, 1e-6) over pixels and channels: the incremental preview against
@@ -175,8 +182,10 @@ int runRelight(const std::vector<std::string>& argv) {
             if (auto st = scene::writeExr(coarseFile, *coarseImage); !st) return reportError(st.error());
         }
         util::Timer incremental;
+        const double cpuBefore = processCpuMs();
         const relight::EditSummary summary = (*preview)->applyChanges(scene, edit.changes);
         const double incrementalMs = incremental.milliseconds();
+        const double incrementalCpuMs = processCpuMs() - cpuBefore;
         util::Timer imageTimer;
         const util::ImageRGB image = (*preview)->image(*width, *height);
         const double imageMs = imageTimer.milliseconds();
@@ -194,6 +203,9 @@ int runRelight(const std::vector<std::string>& argv) {
         e["factorsRebuilt"] = summary.factorsRebuilt;
         e["pointsTouched"] = summary.pointsTouched;
         e["incrementalMs"] = incrementalMs;
+        // CPU time of every thread of the process during applyChanges (its workers; nothing else
+        // runs meanwhile): steadier than wall time on a loaded machine.
+        e["incrementalCpuMs"] = incrementalCpuMs;
         e["fullRebuildMs"] = skipFull ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(fullMs);
         e["sharedFactorsMs"] = summary.sharedMs;
         e["perPointMs"] = summary.pointsMs;

@@ -46,24 +46,29 @@ public:
         while (i > 0 && m_out[i - 1].texel > texel) --i;
         const glm::vec3 unit = glm::normalize(dir);
         const float w = weight.x + weight.y + weight.z;
+        // The sample's point on the light relative to p (its direction alone for the sun): the
+        // entry's shadow ray aims at their weighted mean, which for a rect lies on the light.
+        // (A ray along the texel's centre up to the samples' mean distance overshoots the light
+        // where the texel's centre misses it: under the Cornell box's ceiling, 2 cm above its
+        // light, that put the ceiling in the way of about half the light's texels.)
+        const glm::vec3 point = std::isfinite(distance) ? unit * distance : unit;
         if (i > 0 && m_out[i - 1].texel == texel) {
             m_out[i - 1].weight += weight;
-            m_out[i - 1].distance += distance;
-            m_out[i - 1].direction += unit * w;
-            ++m_counts[i - 1];
+            m_out[i - 1].direction += point * w;
             return;
         }
-        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, unit * w});
-        for (size_t k = m_out.size() - 1; k > i; --k) m_counts[k] = m_counts[k - 1];
-        m_counts[i] = 1;
+        m_out.insert(m_out.begin() + std::ptrdiff_t(i), TexelWeight{texel, weight, distance, point * w});
     }
     // The light is smaller than a quarter texel: one sample carries it all.
     void markCompact() { m_compact = true; }
     void finish() {
-        for (size_t i = 0; i < m_out.size(); ++i) {
-            m_out[i].distance /= float(m_counts[i]);
-            const float len = glm::length(m_out[i].direction);
-            m_out[i].direction = len > 0.0f ? m_out[i].direction / len : m_dirs.direction(m_out[i].texel);
+        for (TexelWeight& e : m_out) {
+            // direction holds sum of w x point: the mean point's distance (finite lights) and
+            // its direction.
+            const float w = e.weight.x + e.weight.y + e.weight.z;
+            const float len = glm::length(e.direction);
+            if (std::isfinite(e.distance) && w > 0.0f) e.distance = len / w;
+            e.direction = len > 0.0f ? e.direction / len : m_dirs.direction(e.texel);
         }
         std::erase_if(m_out, [](const TexelWeight& e) { return e.weight == glm::vec3(0.0f); });
         for (TexelWeight& e : m_out) e.compact = m_compact;
@@ -72,7 +77,6 @@ public:
 private:
     const TexelDirections& m_dirs;
     std::vector<TexelWeight>& m_out;
-    int m_counts[kMaxSide * kMaxSide] = {};
     bool m_compact = false;
 };
 
@@ -101,14 +105,14 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
         }
 }
 
-void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& light,
+void addRect(Accumulator& acc, const TexelDirections& dirs, const scene::Light& light, const glm::vec3& power,
              const glm::vec3& p) {
     const float area = light.size.x * light.size.y;
     const float len = glm::length(light.direction);
     if (!(area > 0.0f) || !(len > 0.0f)) return;
     const glm::vec3 n = light.direction / len;
     const Basis basis = basisAround(n); // U = normalize(cross(ref, n)), V = cross(n, U)
-    const glm::vec3 radiance = light.color * light.intensity * float(1.0 / (kPi * double(area)));
+    const glm::vec3 radiance = power * float(1.0 / (kPi * double(area)));
     const glm::vec3 toP = p - light.position;
     const float d2 = glm::dot(toP, toP);
     if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
@@ -158,8 +162,17 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
 
 void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
                   std::vector<TexelWeight>& out) {
+    projectLightWithPower(light, light.color * light.intensity, p, dirs, out);
+}
+
+void projectUnitLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                      std::vector<TexelWeight>& out) {
+    projectLightWithPower(light, glm::vec3(1.0f), p, dirs, out);
+}
+
+void projectLightWithPower(const scene::Light& light, const glm::vec3& power, const glm::vec3& p,
+                           const TexelDirections& dirs, std::vector<TexelWeight>& out) {
     Accumulator acc(dirs, out);
-    const glm::vec3 power = light.color * light.intensity;
     const glm::vec3 toLight = light.position - p;
     const float d2 = glm::dot(toLight, toLight);
     switch (light.type) {
@@ -184,7 +197,7 @@ void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDire
         acc.add(dir, power * float(1.0 / (4.0 * kPi)) * falloff / d2, std::sqrt(d2));
         break;
     }
-    case scene::LightType::Rect: addRect(acc, dirs, light, p); break;
+    case scene::LightType::Rect: addRect(acc, dirs, light, power, p); break;
     case scene::LightType::Sun: {
         const float len = glm::length(light.direction);
         if (!(len > 0.0f)) break;

@@ -25,10 +25,13 @@ namespace wavelit::relight {
 struct TexelWeight {
     uint32_t texel = 0;
     glm::vec3 weight{0.0f}; // integral of radiance over the texel's solid angle
-    float distance = 0.0f;  // mean distance to the light's samples in the texel (inf: the sun)
-    // The power-weighted mean direction of the light's samples in the texel (unit), and whether
-    // the whole light is smaller than a quarter texel (one entry): then a narrow glossy lobe
-    // sees it at that direction rather than as the texel's average (point_transfer.h).
+    // The power-weighted mean of the light's sample points in the texel: its distance (inf: the
+    // sun) and direction (unit) from p. A shadow ray toward a local light aims there (for a rect
+    // it lies on the light, so the ray stops at the light even where the texel's centre
+    // direction passes beside it). And whether the whole light is smaller than a quarter texel
+    // (one entry): then a narrow glossy lobe sees it at that direction rather than as the
+    // texel's average (point_transfer.h).
+    float distance = 0.0f;
     glm::vec3 direction{0.0f, 0.0f, 1.0f};
     bool compact = false;
 };
@@ -45,5 +48,11 @@ std::vector<TexelWeight> projectLight(const scene::Light& light, const glm::vec3
 // The same into `out` (cleared first), which keeps its capacity between calls.
 void projectLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
                   std::vector<TexelWeight>& out);
+// projectLight(unitPowerLight(light), ...) without copying the light (its name) per point: the
+// same values bit for bit. `power` in place of colour x intensity.
+void projectUnitLight(const scene::Light& light, const glm::vec3& p, const TexelDirections& dirs,
+                      std::vector<TexelWeight>& out);
+void projectLightWithPower(const scene::Light& light, const glm::vec3& power, const glm::vec3& p,
+                           const TexelDirections& dirs, std::vector<TexelWeight>& out);
 
 } // namespace wavelit::relight

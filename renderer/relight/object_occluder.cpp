@@ -2,13 +2,54 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <limits>
 
 namespace wavelit::relight {
 
-ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex) {
+namespace {
+
+// Every vertex on or below every triangle's plane (sign -1: above), within a tolerance far below
+// the rays' surface offset (1e-4 x max(1, |p|)).
+bool allBelowEveryPlane(const std::vector<glm::vec3>& vertices, const scene::TriangleMesh& mesh, float sign) {
+    float extent = 0.0f;
+    for (const glm::vec3& v : vertices) extent = std::max(extent, glm::length(v));
+    const float tolerance = 1e-6f * std::max(1.0f, extent);
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::vec3& a = mesh.positions[mesh.indices[t]];
+        const glm::vec3 n = sign * glm::cross(mesh.positions[mesh.indices[t + 1]] - a,
+                                              mesh.positions[mesh.indices[t + 2]] - a);
+        const float len = glm::length(n);
+        if (!(len > 0.0f)) continue;
+        for (const glm::vec3& v : vertices)
+            if (glm::dot(n, v - a) > tolerance * len) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+MeshConvexity meshConvexity(const scene::TriangleMesh& mesh) {
+    MeshConvexity c;
+    // Quadratic: a mesh too large for it is simply treated as not convex (rays as before).
+    if (mesh.indices.empty() || double(mesh.triangleCount()) * double(mesh.positions.size()) > 2e8) return c;
+    std::vector<glm::vec3> vertices;
+    for (uint32_t i : mesh.indices) vertices.push_back(mesh.positions[i]);
+    std::sort(vertices.begin(), vertices.end(), [](const glm::vec3& a, const glm::vec3& b) {
+        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+    });
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    c.front = allBelowEveryPlane(vertices, mesh, 1.0f);
+    c.back = allBelowEveryPlane(vertices, mesh, -1.0f);
+    return c;
+}
+
+ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex, ConvexityCache& cache) {
     scene::Scene single;
     single.objects = {scene.objects[objectIndex]};
     ObjectOccluder o;
@@ -29,6 +70,19 @@ ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex
         }
     // Padded so float rounding of the vertices never puts a surface outside the sphere.
     o.bounds.radius = std::sqrt(r2) * 1.0001f + 1e-5f;
+    const scene::Object& object = scene.objects[objectIndex];
+    if (object.mesh) {
+        auto it = cache.find(object.mesh);
+        if (it == cache.end()) it = cache.emplace(object.mesh, meshConvexity(*object.mesh)).first;
+        const float det = glm::determinant(glm::mat3(object.transform.matrix()));
+        if (det > 0.0f) {
+            o.convexFront = it->second.front;
+            o.convexBack = it->second.back;
+        } else if (det < 0.0f) { // a mirror turns the triangles' winding
+            o.convexFront = it->second.back;
+            o.convexBack = it->second.front;
+        }
+    }
     return o;
 }
 

@@ -12,6 +12,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <map>
+#include <memory>
+
 namespace wavelit::relight {
 
 struct BoundingSphere {
@@ -22,9 +25,28 @@ struct BoundingSphere {
 struct ObjectOccluder {
     scene::Bvh bvh;
     BoundingSphere bounds;
+    // Every vertex lies on or below every triangle's plane, as its winding orients it (a closed
+    // convex mesh seen from outside, a flat ground): a ray leaving a point of the mesh above its
+    // triangle's plane cannot hit the mesh again, so the point needs no self-visibility rays (Õ1
+    // is its horizon alone). `convexBack`: the same with the planes facing the other way (a
+    // point seen from behind its triangle's winding; both for a flat mesh).
+    bool convexFront = false;
+    bool convexBack = false;
 };
 
-ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex);
+
+
+// Convexity of a mesh in its own space (ObjectOccluder::convexFront / convexBack before the
+// object's transform: one with a positive determinant keeps both, a mirror swaps them). Cached
+// per mesh by the preview: a drag moves the object, not its mesh.
+struct MeshConvexity {
+    bool front = false;
+    bool back = false;
+};
+MeshConvexity meshConvexity(const scene::TriangleMesh& mesh);
+using ConvexityCache = std::map<std::shared_ptr<const scene::TriangleMesh>, MeshConvexity>;
+
+ObjectOccluder buildObjectOccluder(const scene::Scene& scene, size_t objectIndex, ConvexityCache& cache);
 
 // The texels of `candidates` whose directions from p may meet the sphere (conservative: widened
 // by the texel radius). Empty bits for an empty sphere.

@@ -27,22 +27,29 @@ bool blockedByOthers(const PointState& s, size_t texel) {
     return false;
 }
 
-// cosine x f at a texel above the horizon, without visibility, with the given parameters.
+// cosine x f at a texel above the horizon, without visibility, with the given parameters, and
+// with `black` too when given (one local direction and one lobe test for both).
 glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const util::Frame& frame,
-                     const glm::vec3& wo, size_t texel, const plugins::BrdfParams& params) {
+                     const glm::vec3& wo, size_t texel, const plugins::BrdfParams& params,
+                     const plugins::BrdfParams* black = nullptr, glm::vec3* blackOut = nullptr) {
     const glm::vec3& wi = ctx.dirs->direction(texel);
     const ResolvedMaterial& m = materialOf(ctx, p);
     const glm::vec3 local = frame.toLocal(wi);
     if (m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
         constexpr int kCount = TexelDirections::kSub * TexelDirections::kSub;
         const glm::vec3* sub = ctx.dirs->subDirections(texel);
-        glm::vec3 sum(0.0f);
+        glm::vec3 sum(0.0f), sum0(0.0f);
         for (int k = 0; k < kCount; ++k) {
             const glm::vec3 l = frame.toLocal(sub[k]);
-            if (l.z > 0.0f) sum += m.brdf->eval(params, wo, l) * l.z;
+            if (l.z > 0.0f) {
+                sum += m.brdf->eval(params, wo, l) * l.z;
+                if (black) sum0 += m.brdf->eval(*black, wo, l) * l.z;
+            }
         }
+        if (black) *blackOut = sum0 / float(kCount);
         return sum / float(kCount);
     }
+    if (black) *blackOut = m.brdf->eval(*black, wo, local) * local.z;
     return m.brdf->eval(params, wo, local) * local.z;
 }
 
@@ -106,13 +113,12 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
     const glm::vec3 origin = rayOrigin(p);
     glm::vec3 sum(0.0f), sum0(0.0f);
     thread_local std::vector<TexelWeight> entries;
-    projectLight(unitPowerLight(light), origin, *ctx.dirs, entries);
+    projectUnitLight(light, origin, *ctx.dirs, entries);
     for (const TexelWeight& e : entries) {
         if (!testBit(s.above, e.texel)) continue;
         bool seen = visible(s, e.texel);
         if (!seen && std::isfinite(e.distance))
-            seen = !scene::occluded(*ctx.sceneBvh, origin, ctx.dirs->direction(e.texel), 0.0f,
-                                    e.distance * (1.0f - 1e-3f));
+            seen = !scene::occluded(*ctx.sceneBvh, origin, e.direction, 0.0f, e.distance * (1.0f - 1e-3f));
         if (!seen) continue;
         // A narrow lobe near its mirror direction sees a light smaller than a texel where the
         // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
@@ -126,8 +132,9 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
             }
             continue;
         }
-        sum += unshadowed(ctx, p, frame, wo, e.texel, m.params) * e.weight;
-        if (black) sum0 += unshadowed(ctx, p, frame, wo, e.texel, m.black) * e.weight;
+        glm::vec3 f0(0.0f);
+        sum += unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0) * e.weight;
+        if (black) sum0 += f0 * e.weight;
     }
     if (black) *black = sum0;
     return sum;
@@ -208,8 +215,9 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
         for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
             const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
             if (blockedByOthers(s, t)) continue;
-            texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params)) * finest;
-            if (affine) texels0[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.black)) * finest;
+            glm::vec3 f0(0.0f);
+            texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0)) * finest;
+            if (affine) texels0[t] = glm::dvec3(f0) * finest;
         }
     compress(texels, level, ctx.keep, s.transfer);
     if (affine) compress(texels0, level, ctx.keep, s.transfer0);
@@ -282,7 +290,9 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
         if (glm::dot(dirs.direction(t), p.geometric) > 0.0f && glm::dot(dirs.direction(t), p.shading) > 0.0f)
             setBit(above, t);
     const glm::vec3 origin = rayOrigin(p);
-    const TexelBits self = castOcclusion((*ctx.occluders)[p.object], origin, dirs, above);
+    const ObjectOccluder& own = (*ctx.occluders)[p.object];
+    const bool convex = p.backFace ? own.convexBack : own.convexFront;
+    const TexelBits self = convex ? makeBits(dirs.count()) : castOcclusion(own, origin, dirs, above);
     s.above = above;
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];

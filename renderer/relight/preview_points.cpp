@@ -45,7 +45,10 @@ PreviewPoint castRay(const scene::Scene& scene, const scene::Bvh& bvh, const glm
     // docs/estimator.md "Surfaces", as the reference tracer's surfaceAt.
     const glm::vec3 p0 = vec3Of(tri.v0), p1 = vec3Of(tri.v1), p2 = vec3Of(tri.v2);
     glm::vec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-    if (glm::dot(ng, dir) > 0.0f) ng = -ng;
+    if (glm::dot(ng, dir) > 0.0f) {
+        ng = -ng;
+        p.backFace = true;
+    }
     const float b0 = 1.0f - hit.b1 - hit.b2;
     glm::vec3 ns = b0 * vec3Of(tri.n0) + hit.b1 * vec3Of(tri.n1) + hit.b2 * vec3Of(tri.n2);
     const float length = glm::length(ns);

@@ -24,6 +24,7 @@ struct PreviewPoint {
     uint32_t object = 0;       // index into Scene::objects
     uint32_t material = 0;     // index into Scene::materials (== size: the default Material{})
     float distance = 0.0f;     // along the camera ray to the hit (infinity for a miss)
+    bool backFace = false;     // n_g is the triangle's winding normal negated (seen from behind)
 
     bool operator==(const PreviewPoint&) const = default;
 };

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 namespace wavelit::relight {
@@ -45,6 +46,38 @@ bool onlyScales(const scene::ChangeSet& changes, scene::EntityRef ref,
         if (std::find(scalers.begin(), scalers.end(), edit->property) == scalers.end()) return false;
     }
     return true;
+}
+
+// Whether a shadow ray from `origin` toward light k can pass through `sphere`: their bounding
+// cones (the light's: its position and extent, the sun's: its angular radius; each widened by a
+// texel radius, as a light texel's ray runs anywhere in its texel) meet. A moved object whose old
+// and new spheres both miss the light's cone cannot change the light's shadow rays.
+bool lightConeMeets(const scene::Light& light, const glm::vec3& origin, const BoundingSphere& sphere,
+                    double texelRadius) {
+    if (sphere.radius < 0.0f) return false;
+    const glm::vec3 toSphere = sphere.centre - origin;
+    const float sphereDistance = glm::length(toSphere);
+    if (sphereDistance <= sphere.radius) return true;
+    glm::vec3 axis;
+    double half = 0.0;
+    if (light.type == scene::LightType::Sun) {
+        const float len = glm::length(light.direction);
+        if (!(len > 0.0f)) return true;
+        axis = -light.direction / len;
+        half = 0.5 * double(light.angularDiameterDeg) * 3.14159265358979 / 180.0;
+    } else {
+        float extent = 0.0f;
+        if (light.type == scene::LightType::Sphere) extent = light.radius;
+        if (light.type == scene::LightType::Rect) extent = 0.5f * glm::length(glm::vec2(light.size.x, light.size.y));
+        const glm::vec3 toLight = light.position - origin;
+        const float lightDistance = glm::length(toLight);
+        if (!(lightDistance > extent)) return true;
+        axis = toLight / lightDistance;
+        half = std::asin(double(extent) / double(lightDistance));
+    }
+    const double sphereHalf = std::asin(double(sphere.radius) / double(sphereDistance));
+    const double cosAngle = std::clamp(double(glm::dot(axis, toSphere / sphereDistance)), -1.0, 1.0);
+    return std::acos(cosAngle) <= half + sphereHalf + 2.0 * texelRadius + 1e-4;
 }
 
 } // namespace
@@ -122,7 +155,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     for (size_t k : lights) summary.factorsRebuilt.push_back("light:" + m_scene->lighting.lights[k].name);
     for (uint32_t m : materials) summary.factorsRebuilt.push_back("brdf:" + m_scene->materials[m].name);
     for (size_t j : objects) {
-        m_occluders[j] = buildObjectOccluder(*m_scene, j);
+        m_occluders[j] = buildObjectOccluder(*m_scene, j, m_convexity);
         summary.factorsRebuilt.push_back("occlusion:" + m_scene->objects[j].name);
     }
     const bool recast = camera || objectMaterial || !objects.empty();
@@ -233,7 +266,18 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
             touched[i] = 1;
         }
         if (lightsToo) {
-            for (size_t k = 0; k < s.lightTerms.size(); ++k) updateLightTerms(ctx, p, s, k);
+            // O_j is unchanged here, so a light term can change only through its shadow rays
+            // (cast toward local lights, in texels blocked at infinity), and only if the object's
+            // old or new sphere can lie across them.
+            for (size_t k = 0; k < s.lightTerms.size(); ++k) {
+                const scene::Light& light = m_scene->lighting.lights[k];
+                if (light.type == scene::LightType::Sun) continue; // no shadow rays: O factors only
+                bool meets = false;
+                for (size_t n = 0; n < objects.size() && !meets; ++n)
+                    meets = lightConeMeets(light, origin, oldBounds[n], m_dirs.texelRadius()) ||
+                            lightConeMeets(light, origin, m_occluders[objects[n]].bounds, m_dirs.texelRadius());
+                if (meets) updateLightTerms(ctx, p, s, k);
+            }
             return;
         }
         for (size_t k : lights) {

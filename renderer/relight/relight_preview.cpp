@@ -24,6 +24,9 @@ util::Result<std::unique_ptr<RelightPreview>> RelightPreview::create(const scene
 }
 
 void RelightPreview::resolveMaterials() {
+    // The lights at unit power, once per scene (not per pixel: a copy holds the light's name).
+    m_unitLights.clear();
+    for (const scene::Light& light : m_scene->lighting.lights) m_unitLights.push_back(unitPowerLight(light));
     m_materials.clear();
     auto resolve = [&](const scene::Material& m) { return resolveMaterial(m, m_dirs.texelRadius()); };
     for (const scene::Material& m : m_scene->materials) m_materials.push_back(resolve(m));
@@ -48,7 +51,7 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_bvh = scene::buildBvh(*m_scene);
     m_occluders.clear();
     for (size_t j = 0; j < m_scene->objects.size(); ++j)
-        m_occluders.push_back(buildObjectOccluder(*m_scene, j));
+        m_occluders.push_back(buildObjectOccluder(*m_scene, j, m_convexity));
     buildEnvironment();
     m_points = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
     m_states.assign(m_points.size(), PointState{});
@@ -75,7 +78,7 @@ void RelightPreview::buildEnvironment() {
 
 void RelightPreview::updateCameraLight(size_t k, size_t i, const CameraRays& rays) {
     const int w = m_settings.width;
-    m_cameraLights[k][i] = lightSeenByPixel(unitPowerLight(m_scene->lighting.lights[k]), m_scene->camera, rays,
+    m_cameraLights[k][i] = lightSeenByPixel(m_unitLights[k], m_scene->camera, rays,
                                             int(i % size_t(w)), int(i / size_t(w)), m_points[i].distance);
 }
 

@@ -76,7 +76,7 @@ public:
 private:
     explicit RelightPreview(const RelightSettings& settings);
     void rebuildAll(const scene::Scene& scene);
-    void resolveMaterials();
+    void resolveMaterials(); // and m_unitLights
     glm::vec3 radiance(size_t i, const std::vector<glm::vec3>& lightPowers) const;
 
     RelightSettings m_settings;
@@ -84,6 +84,7 @@ private:
     std::unique_ptr<scene::Scene> m_scene;
     scene::Bvh m_bvh;
     std::vector<ObjectOccluder> m_occluders;
+    ConvexityCache m_convexity; // per mesh, kept across edits
     std::vector<ResolvedMaterial> m_materials;
     EnvironmentFactor m_environment;
     std::shared_ptr<const util::ImageRGB> m_envSource; // reduceEquirect of the environment's image
@@ -94,6 +95,7 @@ private:
     std::vector<glm::vec3> m_background; // environment seen by missed rays
     // Per light, per pixel: the light seen directly by the camera, per unit power.
     std::vector<std::vector<glm::vec3>> m_cameraLights;
+    std::vector<scene::Light> m_unitLights; // unitPowerLight of each light
     void updateCameraLight(size_t k, size_t pixel, const CameraRays& rays);
 };
 

@@ -179,9 +179,11 @@ TEST(RelightColourUse, ClassifiesThePluginsAndRefusesANonAffineOne) {
 TEST(RelightSphereLevel, FinerGridOnlyForALobeNarrowerThanHalfATexel) {
     scene::Scene scene = testing::makeRelightScene(); // GGX r = 0.3 on the box
     EXPECT_EQ(chooseSphereLevel(scene).level, 5) << chooseSphereLevel(scene).reason;
-    scene.materials[1].roughness = 0.1f;
+    scene.materials[1].roughness = 0.15f; // half-width 0.045 rad: under half a 32^2 texel only
     EXPECT_EQ(chooseSphereLevel(scene).level, 6);
     EXPECT_NE(chooseSphereLevel(scene).reason.find("shiny"), std::string::npos);
+    scene.materials[1].roughness = 0.1f; // 0.020 rad: under half a 64^2 texel (0.033)
+    EXPECT_EQ(chooseSphereLevel(scene).level, 7) << chooseSphereLevel(scene).reason;
     scene.objects[1].materialId = 1; scene.objects[2].materialId = 1; // the glossy material unused
     EXPECT_EQ(chooseSphereLevel(scene).level, 5);
 }

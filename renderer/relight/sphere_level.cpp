@@ -23,16 +23,18 @@ SphereLevelChoice chooseSphereLevel(const scene::Scene& scene) {
         }
     }
     SphereLevelChoice c;
-    const double texel = TexelDirections(5).texelRadius();
-    char text[200];
-    if (2.0 * narrowest < texel) {
-        c.level = 6;
-        std::snprintf(text, sizeof text, "64^2: material '%s' has a lobe of half-width %.3f rad, under half a 32^2 texel (%.3f rad)",
-                      which.c_str(), narrowest, texel);
-    } else {
-        c.level = 5;
-        std::snprintf(text, sizeof text, "32^2: no lobe in use is narrower than half a texel (%.3f rad)", texel);
-    }
+    char text[240];
+    // The finest grid whose half texel is still wider than the lobe, from 32^2 up to 128^2.
+    c.level = 5;
+    while (c.level < 7 && 2.0 * narrowest < TexelDirections(c.level).texelRadius()) ++c.level;
+    const int side = 1 << c.level;
+    if (c.level == 5)
+        std::snprintf(text, sizeof text, "32^2: no lobe in use is narrower than half a texel (%.3f rad)",
+                      TexelDirections(5).texelRadius());
+    else
+        std::snprintf(text, sizeof text,
+                      "%d^2: material '%s' has a lobe of half-width %.3f rad, under half a %d^2 texel (%.3f rad)",
+                      side, which.c_str(), narrowest, side / 2, TexelDirections(c.level - 1).texelRadius());
     c.reason = text;
     return c;
 }
