@@ -26,6 +26,8 @@
 #include <QStatusBar>
 #include <QTreeWidget>
 
+#include <initializer_list>
+
 namespace wavelit::editor {
 namespace {
 
@@ -66,8 +68,16 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
 }
 
 // Declared here so the render controller (a child) is destroyed, and its thread joined, while
-// the widgets it signals still exist.
-MainWindow::~MainWindow() { delete m_render; }
+// the widgets it signals still exist. First the panels and the document go quiet: ~QWidget
+// closes the window and moves the focus while it deletes the children one by one, so a text
+// field still holding edited text commits it (editingFinished) — and that edit, applied to the
+// document, rebuilt panels already deleted (LightMixPanel::rebuild crashed on its layout).
+// Nothing the window shows may change once it is going.
+MainWindow::~MainWindow() {
+    for (QObject* source : std::initializer_list<QObject*>{m_properties, m_lightMix, m_outline, m_document})
+        source->blockSignals(true);
+    delete m_render;
+}
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (m_closeApproved || !m_document->isModified()) {
