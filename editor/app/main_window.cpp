@@ -183,7 +183,13 @@ void MainWindow::wireViewportHandlers() {
     });
     // Viewport (issue 14): picking, gizmos, environment drag, pan and frame (viewport_interaction.h).
     auto* interaction = new ViewportInteraction(m_viewport, this); // filters before the camera
+    m_interaction = interaction;
     interaction->setObjectName("viewportInteraction");
+    // A manipulator drag held at its range's limit says so in the status bar too (the viewport
+    // draws it beside the light).
+    connect(interaction, &ViewportInteraction::clampNotice, this, [this](const QString& message) {
+        if (!message.isEmpty()) statusBar()->showMessage(message, 5000);
+    });
     m_viewport->installEventFilter(interaction);
     auto* sink = new ViewportEditSink(
         m_document->undoStack(), [this](const PropertyEdit& edit) { return m_document->apply(edit); },
