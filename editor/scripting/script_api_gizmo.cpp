@@ -6,6 +6,7 @@
 
 #include "app/main_window.h"
 #include "app/scene_document.h"
+#include "viewport/render_controller.h"
 #include "viewport/light_manipulators.h"
 #include "viewport/rotate_gizmo.h"
 #include "viewport/view_projection.h"
@@ -94,11 +95,16 @@ bool AppApi::setCrossFadeMs(int ms) {
 
 QJSValue AppApi::viewportPixels(const QString& which) {
     ViewportWidget* viewport = m_window->viewport();
-    const QSize size = viewport->imageSize();
-    if (size.isEmpty()) return fail("viewportPixels: the viewport shows no image yet"), QJSValue();
+    const QRectF shown = viewport->imageRect();
+    if (shown.isEmpty()) return fail("viewportPixels: the viewport shows no image yet"), QJSValue();
+    // Painted: sampled on the render size's grid (a ¼-size draft on screen is read on the same
+    // grid as the path-traced image it fades into).
+    const RenderSettings& settings = m_window->renderer()->settings();
+    const bool painted = which.isEmpty() || which == "painted";
+    const QSize size = painted && settings.width > 0 && settings.height > 0 ? QSize(settings.width, settings.height)
+                                                                           : viewport->imageSize();
     QImage image;
     double fade = -1.0;
-    const bool painted = which.isEmpty() || which == "painted";
     if (painted) {
         image = viewport->grab().toImage(); // paints now: the fade at this instant
         fade = viewport->lastPaintedFade();
@@ -113,7 +119,8 @@ QJSValue AppApi::viewportPixels(const QString& which) {
         for (int x = 0; x < size.width(); ++x) {
             QPoint at(x, y);
             if (painted) {
-                const QPointF w = viewport->imageToWidget({x + 0.5, y + 0.5});
+                const QPointF w(shown.x() + (x + 0.5) * shown.width() / size.width(),
+                                shown.y() + (y + 0.5) * shown.height() / size.height());
                 at = QPoint(int(std::floor(w.x())), int(std::floor(w.y())));
             }
             lum.setProperty(quint32(y * size.width() + x), luminance(image.pixel(at)));

@@ -175,6 +175,7 @@ ManipulatorDrag::ManipulatorDrag(const scene::Scene& scene, EntityRef ref, const
     }
     case ManipulatorKind::Cone:
         m_axis = glm::normalize(light->direction);
+        m_outward = screenPerpendicular(m_axis, view); // the side the handle is drawn on
         m_start = light->coneOuterDeg;
         m_lo = std::max(m_lo, light->coneInnerDeg); // inner <= outer (scene_validation.cpp)
         break;
@@ -190,9 +191,10 @@ std::optional<glm::vec3> ManipulatorDrag::onPlane(glm::vec2 pixel) const {
 }
 
 float ManipulatorDrag::coneAngleDeg(const glm::vec3& p) const {
+    // Signed toward the handle's side: a drag across the axis narrows the cone below 0, not
+    // back open on the other side.
     const glm::vec3 w = p - m_centre;
-    const float along = glm::dot(w, m_axis);
-    return glm::degrees(std::atan2(glm::length(w - along * m_axis), along));
+    return glm::degrees(std::atan2(glm::dot(w, m_outward), glm::dot(w, m_axis)));
 }
 
 ManipulatorValue ManipulatorDrag::valueAt(glm::vec2 pixel) const {
@@ -215,9 +217,11 @@ ManipulatorValue ManipulatorDrag::valueAt(glm::vec2 pixel) const {
                             : m_kind == ManipulatorKind::SizeX ? "Width"
                                                                : "Height";
         const char* unit = m_kind == ManipulatorKind::Cone ? "°" : " m";
-        const std::string hi = m_hi >= 1e29f ? std::string("∞") : format(m_hi);
-        out.clamped = std::string(label) + ": " + format(wanted) + unit + " is outside [" + format(m_lo) + ", " + hi +
-                      "] — held at " + format(held) + unit;
+        // Built by appends: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+        std::string& m = out.clamped;
+        m.append(label).append(": ").append(format(wanted)).append(unit).append(" is outside [");
+        m.append(format(m_lo)).append(", ").append(m_hi >= 1e29f ? std::string("∞)") : format(m_hi).append("]"));
+        m.append(" — held at ").append(format(held)).append(unit);
     }
     switch (m_kind) {
     case ManipulatorKind::Radius: out.property = "radius"; out.value = held; break;
