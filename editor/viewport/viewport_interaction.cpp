@@ -83,8 +83,10 @@ bool ViewportInteraction::frameSelected() {
 bool ViewportInteraction::eventFilter(QObject* watched, QEvent* event) {
     switch (event->type()) {
     case QEvent::KeyPress: {
-        const int key = static_cast<QKeyEvent*>(event)->key();
+        const auto* keyEvent = static_cast<QKeyEvent*>(event);
+        const int key = keyEvent->key();
         if (m_mode != Mode::Idle) return false;
+        if (keyEvent->modifiers() != Qt::NoModifier && key != Qt::Key_F) return false; // Ctrl+E is not E
         if (key == Qt::Key_F) frameSelected();
         else if (key == Qt::Key_W) setGizmoMode(GizmoMode::Move);   // as Blender and Maya
         else if (key == Qt::Key_E) setGizmoMode(GizmoMode::Rotate);

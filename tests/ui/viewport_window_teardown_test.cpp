@@ -4,11 +4,14 @@
 // down — LightMixPanel::rebuild crashed on a deleted layout. ~MainWindow now cuts the panels and
 // the document off from the window before its children go (main_window.cpp). The test types into
 // the light's name field, leaves the text uncommitted and deletes the window (not closes it);
-// it passes when that returns. A second case closes the window the same way first.
+// it passes when that returns. A second case closes the window the same way first. A third
+// presses W and E in the viewport (the gizmo mode keys, viewport_interaction.h).
 #include "app/main_window.h"
 #include "app/scene_document.h"
 #include "panels/outline_panel.h"
 #include "panels/property_panel.h"
+#include "viewport/viewport_interaction.h"
+#include "viewport/viewport_widget.h"
 
 #include <QLineEdit>
 #include <QPointer>
@@ -22,6 +25,7 @@ class ViewportWindowTeardownTest : public QObject {
 private slots:
     void deleteWithEditedTextField();
     void closeThenDeleteWithEditedTextField();
+    void gizmoModeKeys();
 
 private:
     MainWindow* windowWithEditedName();
@@ -45,7 +49,7 @@ MainWindow* ViewportWindowTeardownTest::windowWithEditedName() {
     auto* name = qobject_cast<QLineEdit*>(window->properties()->editorFor("name"));
     if (!name) return window;
     name->setFocus();
-    QTest::qWaitFor([&] { return name->hasFocus(); }, 5000);
+    if (!QTest::qWaitFor([&] { return name->hasFocus(); }, 5000)) return window;
     name->end(false);
     QTest::keyClicks(name, "_edited"); // typed, not committed (no Enter, focus still there)
     return window;
@@ -72,6 +76,23 @@ void ViewportWindowTeardownTest::closeThenDeleteWithEditedTextField() {
     // modified and the close asks; scripts and tests answer "cancel" by default), then delete.
     window->close();
     QTest::qWait(50);
+    delete window;
+}
+
+void ViewportWindowTeardownTest::gizmoModeKeys() {
+    MainWindow* window = windowWithEditedName();
+    QVERIFY(window->document()->scene());
+    ViewportWidget* viewport = window->viewport();
+    viewport->setFocus();
+    QVERIFY(QTest::qWaitFor([&] { return viewport->hasFocus(); }, 5000));
+    QCOMPARE(window->interaction()->gizmoMode(), GizmoMode::Move);
+    QTest::keyClick(viewport, Qt::Key_E);
+    QCOMPARE(window->interaction()->gizmoMode(), GizmoMode::Rotate);
+    QCOMPARE(viewport->gizmoMode(), GizmoMode::Rotate);
+    QTest::keyClick(viewport, Qt::Key_W, Qt::ControlModifier); // not the mode key
+    QCOMPARE(window->interaction()->gizmoMode(), GizmoMode::Rotate);
+    QTest::keyClick(viewport, Qt::Key_W);
+    QCOMPARE(window->interaction()->gizmoMode(), GizmoMode::Move);
     delete window;
 }
 
