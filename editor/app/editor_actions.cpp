@@ -1,5 +1,6 @@
 #include "app/editor_actions.h"
 
+#include "app/save_file_dialog.h"
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
 
@@ -85,8 +86,7 @@ bool EditorActions::save() {
 
 bool EditorActions::saveAs() {
     if (!m_document->scene()) return false;
-    const QString path =
-        QFileDialog::getSaveFileName(m_window, tr("Save scene as"), m_document->path(), kSceneFilter);
+    const QString path = askSavePath(m_window, SaveTarget::Scene, m_document->path()); // name checked there
     if (path.isEmpty()) return false;
     const auto choice = askLightingSave();
     if (!choice) return false;

@@ -6,6 +6,7 @@
 #include "app/main_window.h"
 #include "app/outline_edits.h"
 #include "app/recent_files.h"
+#include "app/save_file_dialog.h"
 #include "app/scene_document.h"
 #include "app/unsaved_changes_prompt.h"
 #include "panels/outline_panel.h"
@@ -95,15 +96,11 @@ FileActions::FileActions(MainWindow* window)
         if (!path.isEmpty()) this->applyLighting(path, [](const QString&) {});
     });
     connect(saveLighting, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(m_window, tr("Save lighting setup"),
-                                                          folderOf(m_window->document()->path()),
-                                                          tr("Lighting setups (*.wllight)"));
+        const QString path = askSavePath(m_window, SaveTarget::Lighting, folderOf(m_window->document()->path()));
         if (!path.isEmpty()) this->saveLighting(path, [](const QString&) {});
     });
     connect(renderFile, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(m_window, tr("Render to file"),
-                                                          folderOf(m_window->document()->path()),
-                                                          tr("OpenEXR (*.exr);;PNG (*.png)"));
+        const QString path = askSavePath(m_window, SaveTarget::Render, folderOf(m_window->document()->path()));
         if (path.isEmpty()) return;
         bool ok = false;
         const int spp = QInputDialog::getInt(m_window, tr("Render to file"),

@@ -27,6 +27,8 @@
 #include <QStatusBar>
 #include <QTreeWidget>
 
+#include <initializer_list>
+
 namespace wavelit::editor {
 namespace {
 
@@ -67,8 +69,16 @@ MainWindow::MainWindow(const RenderSettings& renderSettings, QWidget* parent)
 }
 
 // Declared here so the render controller (a child) is destroyed, and its thread joined, while
-// the widgets it signals still exist.
-MainWindow::~MainWindow() { delete m_render; }
+// the widgets it signals still exist. First the panels and the document go quiet: ~QWidget
+// closes the window and moves the focus while it deletes the children one by one, so a text
+// field still holding edited text commits it (editingFinished) — and that edit, applied to the
+// document, rebuilt panels already deleted (LightMixPanel::rebuild crashed on its layout).
+// Nothing the window shows may change once it is going.
+MainWindow::~MainWindow() {
+    for (QObject* source : std::initializer_list<QObject*>{m_properties, m_lightMix, m_outline, m_document})
+        source->blockSignals(true);
+    delete m_render;
+}
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (m_closeApproved || !m_document->isModified()) {
@@ -178,7 +188,13 @@ void MainWindow::wireViewportHandlers() {
     });
     // Viewport (issue 14): picking, gizmos, environment drag, pan and frame (viewport_interaction.h).
     auto* interaction = new ViewportInteraction(m_viewport, this); // filters before the camera
+    m_interaction = interaction;
     interaction->setObjectName("viewportInteraction");
+    // A manipulator drag held at its range's limit says so in the status bar too (the viewport
+    // draws it beside the light).
+    connect(interaction, &ViewportInteraction::clampNotice, this, [this](const QString& message) {
+        if (!message.isEmpty()) statusBar()->showMessage(message, 5000);
+    });
     m_viewport->installEventFilter(interaction);
     auto* sink = new ViewportEditSink(
         m_document->undoStack(), [this](const PropertyEdit& edit) { return m_document->apply(edit); },

@@ -22,6 +22,7 @@ class LightMixPanel;
 class LightMixCompare;
 class RenderStatusLabel;
 class SceneDocument;
+class ViewportInteraction;
 class ViewportWidget;
 
 class MainWindow : public QMainWindow {
@@ -40,6 +41,8 @@ public:
     ErrorReporter* errors() const { return m_errors; }
     EditorActions* actions() const { return m_actions; }
     CameraOrbitHandler* cameraHandler() const { return m_cameraHandler; }
+    // Picking, gizmos (move/rotate), light shape handles, environment drag (viewport_interaction.h).
+    ViewportInteraction* interaction() const { return m_interaction; }
     AutosaveController* autosave() const { return m_autosave; }
     // Files, outline and panels (issue 14): file_actions.h, outline_actions.h.
     FileActions* files() const { return m_files; }
@@ -69,6 +72,7 @@ private:
     EditorActions* m_actions;
     CameraOrbitHandler* m_cameraHandler;
     AutosaveController* m_autosave;
+    ViewportInteraction* m_interaction = nullptr;
     FileActions* m_files = nullptr;
     OutlineActions* m_outlineActions = nullptr;
     bool m_closeApproved = false;

@@ -136,6 +136,25 @@ public:
     // compareImages: {rms, relativeRms, meanA, meanB} over luminance (same size, else throws).
     Q_INVOKABLE QJSValue imageInfo(const QString& path);
     Q_INVOKABLE QJSValue compareImages(const QString& a, const QString& b);
+    // --- editor3: gizmo modes and manipulators ---
+    // script_api_gizmo.cpp, docs/scripting.md "Gizmo modes, shape handles, cross-fade".
+    // setGizmoMode: "move" or "rotate" (the W / E keys). gizmoInfo: where the selection's handles
+    // are drawn now, in image pixels: {mode, ringRadius, rings: {x|y|z: {point, tangent}},
+    // handles: {radius|sizeX|sizeY|cone: [x, y]}} (rings only in rotate mode). viewportMessage:
+    // the refusal a clamped shape-handle drag shows ("" for none). projectToViewport: a world point's
+    // image point ([x, y] or null behind the camera). setCrossFadeMs: the preview -> path-traced
+    // fade's length (0: switch at once; default 200). viewportPixels: the viewport as painted,
+    // sampled at the image's pixel centres, {fade, luminance: [W x H sRGB-encoded luminance,
+    // 0..255]} (fade: the new image's opacity in that paint, -1 when one image was painted);
+    // "frame" gives the displayed frame's own display image instead (fade -1).
+    Q_INVOKABLE bool setGizmoMode(const QString& mode);
+    Q_INVOKABLE QString gizmoMode() const;
+    Q_INVOKABLE QJSValue gizmoInfo();
+    Q_INVOKABLE QString viewportMessage() const;
+    Q_INVOKABLE QJSValue projectToViewport(const QJSValue& point);
+    Q_INVOKABLE bool setCrossFadeMs(int ms);
+    Q_INVOKABLE QJSValue viewportPixels(const QString& which = QString());
+    // --- end editor3 ---
     // Ends the editor with this exit code once the script returns.
     Q_INVOKABLE void quit(int exitCode = 0);
 

@@ -82,12 +82,17 @@ bool ViewportInteraction::frameSelected() {
 
 bool ViewportInteraction::eventFilter(QObject* watched, QEvent* event) {
     switch (event->type()) {
-    case QEvent::KeyPress:
-        if (static_cast<QKeyEvent*>(event)->key() == Qt::Key_F && m_mode == Mode::Idle) {
-            frameSelected();
-            return true;
-        }
-        return false;
+    case QEvent::KeyPress: {
+        const auto* keyEvent = static_cast<QKeyEvent*>(event);
+        const int key = keyEvent->key();
+        if (m_mode != Mode::Idle) return false;
+        if (keyEvent->modifiers() != Qt::NoModifier && key != Qt::Key_F) return false; // Ctrl+E is not E
+        if (key == Qt::Key_F) frameSelected();
+        else if (key == Qt::Key_W) setGizmoMode(GizmoMode::Move);   // as Blender and Maya
+        else if (key == Qt::Key_E) setGizmoMode(GizmoMode::Rotate);
+        else return false;
+        return true;
+    }
     case QEvent::MouseButtonPress: return press(watched, event);
     case QEvent::MouseMove: return move(event);
     case QEvent::MouseButtonRelease: return release(event);
@@ -100,6 +105,10 @@ bool ViewportInteraction::press(QObject*, QEvent* event) {
     if (m_mode != Mode::Idle || !m_scene) return false;
     m_pressWidget = mouse->position();
     m_moved = false;
+    if (!m_lastClamp.isEmpty()) { // the refusal stays in view until the next press
+        m_lastClamp.clear();
+        m_viewport->setOverlayMessage({});
+    }
     const auto image = imagePoint(mouse->position());
     m_pressImage = image.value_or(QPointF());
     if (mouse->button() == Qt::LeftButton && image && (mouse->modifiers() & Qt::ControlModifier)) {
@@ -109,27 +118,61 @@ bool ViewportInteraction::press(QObject*, QEvent* event) {
         emit dragActiveChanged(true);
         return true;
     }
-    if (mouse->button() == Qt::LeftButton && image && m_selection) {
-        const QSize size = m_viewport->imageSize();
-        const ViewProjection view(m_scene->camera, size.width(), size.height());
-        const float pxScale = m_viewport->imagePixelsPerScreenPixel();
-        if (auto gizmo = gizmoGeometry(*m_scene, *m_selection, view, pxScale)) {
-            const GizmoPart part = hitGizmo(*gizmo, toGlm(*image), pxScale);
-            if (part != GizmoPart::None) {
-                GizmoDrag drag(part, *m_scene, *m_selection, view, toGlm(*image));
-                if (drag.valid()) {
-                    m_drag = drag;
-                    m_mode = Mode::Gizmo;
-                    m_gestures.begin();
-                    emit dragActiveChanged(true);
-                    return true;
-                }
-            }
-        }
+    if (mouse->button() == Qt::LeftButton && image && m_selection && pressGizmo(toGlm(*image))) {
+        m_mode = Mode::Gizmo;
+        m_gestures.begin();
+        emit dragActiveChanged(true);
+        return true;
     }
     // The camera handler takes it (orbit, pan); a release without motion is a click.
     m_mode = Mode::Camera;
     emit dragActiveChanged(true);
+    return false;
+}
+
+void ViewportInteraction::setGizmoMode(GizmoMode mode) {
+    if (mode == m_gizmoMode) return;
+    m_gizmoMode = mode;
+    m_viewport->setGizmoMode(mode);
+    emit gizmoModeChanged(mode);
+}
+
+// Which handle a press takes, first to last: the move gizmo's centre square (moving is what a
+// light is grabbed for most), a light's shape handles, then the mode's own parts (axis arrows,
+// the sun's handle; or the rotate rings, a sun keeping its handle).
+bool ViewportInteraction::pressGizmo(glm::vec2 image) {
+    const QSize size = m_viewport->imageSize();
+    const ViewProjection view(m_scene->camera, size.width(), size.height());
+    const float pxScale = m_viewport->imagePixelsPerScreenPixel();
+    const EntityRef ref = *m_selection;
+    const auto moveGizmo = gizmoGeometry(*m_scene, ref, view, pxScale);
+    const GizmoPart part = moveGizmo ? hitGizmo(*moveGizmo, image, pxScale) : GizmoPart::None;
+    auto startMove = [&] {
+        GizmoDrag drag(part, *m_scene, ref, view, image);
+        if (drag.valid()) m_drag = drag;
+        return drag.valid();
+    };
+    if (m_gizmoMode == GizmoMode::Move && part == GizmoPart::Centre) return startMove();
+    if (auto shape = manipulatorGeometry(*m_scene, ref, view, pxScale)) {
+        if (auto handle = hitManipulator(*shape, image, pxScale)) {
+            ManipulatorDrag drag(*m_scene, ref, *handle, view, image);
+            if (drag.valid()) {
+                m_manipulator = drag;
+                return true;
+            }
+        }
+    }
+    if (m_gizmoMode == GizmoMode::Move || part == GizmoPart::SunSphere)
+        return part != GizmoPart::None && startMove();
+    if (auto rings = rotateGeometry(*m_scene, ref, view, pxScale)) {
+        if (auto hit = hitRotateRing(*rings, image, pxScale)) {
+            RotateDrag drag(*m_scene, ref, *rings, hit->first, hit->second, image);
+            if (drag.valid()) {
+                m_rotate = drag;
+                return true;
+            }
+        }
+    }
     return false;
 }
 
@@ -149,6 +192,22 @@ bool ViewportInteraction::move(QEvent* event) {
                             m_gestures.current()});
         return true;
     }
+    if (m_mode == Mode::Gizmo && m_rotate) {
+        emit editRequested({m_rotate->entity(), m_rotate->property(), m_rotate->valueAt(toGlm(*image)),
+                            m_gestures.current()});
+        return true;
+    }
+    if (m_mode == Mode::Gizmo && m_manipulator) {
+        const ManipulatorValue v = m_manipulator->valueAt(toGlm(*image));
+        const QString clamp = QString::fromStdString(v.clamped);
+        if (clamp != m_lastClamp) {
+            m_lastClamp = clamp;
+            m_viewport->setOverlayMessage(clamp);
+            emit clampNotice(clamp);
+        }
+        emit editRequested({m_manipulator->entity(), v.property, v.value, m_gestures.current()});
+        return true;
+    }
     if (m_mode == Mode::Gizmo && m_drag) {
         const EntityRef ref = m_drag->entity();
         if (m_drag->part() == GizmoPart::SunSphere)
@@ -165,6 +224,8 @@ bool ViewportInteraction::release(QEvent* event) {
     const Mode mode = m_mode;
     m_mode = Mode::Idle;
     m_drag.reset();
+    m_rotate.reset();
+    m_manipulator.reset();
     m_gestures.end();
     emit dragActiveChanged(false);
     if (mode != Mode::Camera) return true;

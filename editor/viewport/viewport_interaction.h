@@ -3,11 +3,18 @@
 // and passes on what it does not handle):
 //   click (press and release within kClickSlopPx)   select what is under the cursor (picking:
 //                                                   scene_picker.h); empty space clears it;
-//   left-drag on the selection's gizmo              move the light/object (move_gizmo.h), or
-//                                                   turn a sun by dragging its handle;
+//   left-drag on the selection's gizmo              move mode (W): move the light/object
+//                                                   (move_gizmo.h), or turn a sun by dragging
+//                                                   its handle; rotate mode (E): turn an object
+//                                                   or a spot/rect light about a world axis
+//                                                   (rotate_gizmo.h); in both, a light's shape
+//                                                   handles (light_manipulators.h: radius,
+//                                                   size, cone) edit its shape, clamped to the
+//                                                   registry's range (clampNotice says so);
 //   Ctrl + left-drag                                rotate the environment: a horizontal drag
 //                                                   across the whole image is
 //                                                   kEnvDegPerImageWidth, whatever the zoom;
+//   W / E (the viewport focused)                    move / rotate gizmo (setGizmoMode);
 //   F (the viewport focused)                        frame the selection: the camera looks at it
 //                                                   from its current side, an object filling
 //                                                   about 2/3 of the view height;
@@ -18,7 +25,10 @@
 
 #include "commands/property_edit.h"
 #include "panels/gesture_tracker.h"
+#include "viewport/gizmo_mode.h"
+#include "viewport/light_manipulators.h"
 #include "viewport/move_gizmo.h"
+#include "viewport/rotate_gizmo.h"
 #include "viewport/scene_picker.h"
 
 #include <QObject>
@@ -47,12 +57,21 @@ public:
     bool isDragging() const { return m_mode != Mode::Idle; }
     // Frame the selection (the F key): emits viewRequested; false when nothing framable is selected.
     bool frameSelected();
+    void setGizmoMode(GizmoMode mode);
+    GizmoMode gizmoMode() const { return m_gizmoMode; }
+    // The message of the last clamped manipulator drag ("" when the last drag was not clamped).
+    const QString& lastClamp() const { return m_lastClamp; }
 
 signals:
     void editRequested(const wavelit::editor::PropertyEdit& edit);
     void selectRequested(std::optional<wavelit::scene::EntityRef> ref);
     void dragActiveChanged(bool active);
     void viewRequested(const glm::vec3& position, const glm::vec3& target);
+    void gizmoModeChanged(wavelit::editor::GizmoMode mode);
+    // A manipulator drag asked for a value outside the property's range and was held at the limit
+    // (the message names the property, the value asked for, the range and the value kept); ""
+    // when a later move is inside the range again.
+    void clampNotice(const QString& message);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -62,6 +81,7 @@ private:
     bool press(QObject* watched, QEvent* event);
     bool move(QEvent* event);
     bool release(QEvent* event);
+    bool pressGizmo(glm::vec2 image); // the selection's gizmo or shape handles under the press
     std::optional<QPointF> imagePoint(QPointF widgetPoint) const;
 
     ViewportWidget* m_viewport;
@@ -74,6 +94,10 @@ private:
     QPointF m_pressImage;
     bool m_moved = false;
     std::optional<GizmoDrag> m_drag;
+    std::optional<RotateDrag> m_rotate;
+    std::optional<ManipulatorDrag> m_manipulator;
+    GizmoMode m_gizmoMode = GizmoMode::Move;
+    QString m_lastClamp;
     float m_envStartDeg = 0.0f;
 };
 

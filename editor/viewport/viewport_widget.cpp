@@ -1,6 +1,9 @@
 #include "viewport/viewport_widget.h"
 
+#include "viewport/gizmo_painter.h"
+#include "viewport/light_manipulators.h"
 #include "viewport/move_gizmo.h"
+#include "viewport/rotate_gizmo.h"
 #include "viewport/scene_picker.h"
 #include "viewport/tone_map.h"
 
@@ -16,9 +19,18 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
     setMinimumSize(64, 64);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setFocusPolicy(Qt::ClickFocus); // F frames the selection (viewport_interaction.h)
+    m_fadeTimer.setInterval(16);
+    connect(&m_fadeTimer, &QTimer::timeout, this, qOverload<>(&QWidget::update));
 }
 
 void ViewportWidget::showFrame(const RenderFrame& frame) {
+    const bool wasPreview = m_frame.kind != RenderFrame::Kind::PathTraced;
+    if (frame.kind != RenderFrame::Kind::PathTraced) stopFade(); // a new edit's preview: no lingering
+    else if (wasPreview && !m_display.isNull() && m_fadeMs > 0 && frame.generation >= m_frame.generation) {
+        m_fadeFrom = m_display; // implicitly shared: no copy
+        m_fadeClock.start();
+        m_fadeTimer.start();
+    }
     m_frame = frame;
     m_display = frame.display;
     if (m_display.isNull() && frame.image) { // a frame made without its display form
@@ -28,7 +40,13 @@ void ViewportWidget::showFrame(const RenderFrame& frame) {
     update();
 }
 
+void ViewportWidget::stopFade() {
+    m_fadeFrom = QImage();
+    m_fadeTimer.stop();
+}
+
 void ViewportWidget::clear() {
+    stopFade();
     m_frame = RenderFrame{};
     m_display = QImage();
     update();
@@ -70,6 +88,16 @@ void ViewportWidget::setOverlay(std::shared_ptr<const scene::Scene> scene, std::
     update();
 }
 
+void ViewportWidget::setGizmoMode(GizmoMode mode) {
+    m_gizmoMode = mode;
+    update();
+}
+
+void ViewportWidget::setOverlayMessage(const QString& message) {
+    m_overlayMessage = message;
+    update();
+}
+
 void ViewportWidget::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), kBackground);
@@ -77,7 +105,18 @@ void ViewportWidget::paintEvent(QPaintEvent*) {
     const QRectF target = imageRect();
     // Enlarging a small preview smoothly blurs noise; nearest keeps the pixels honest.
     painter.setRenderHint(QPainter::SmoothPixmapTransform, target.width() < m_display.width());
+    m_lastPaintedFade = -1.0;
+    if (!m_fadeFrom.isNull()) {
+        const double t = double(m_fadeClock.nsecsElapsed()) * 1e-6 / double(std::max(m_fadeMs, 1));
+        if (t >= 1.0) stopFade();
+        else {
+            painter.drawImage(target, m_fadeFrom);
+            painter.setOpacity(t);
+            m_lastPaintedFade = t;
+        }
+    }
     painter.drawImage(target, m_display);
+    painter.setOpacity(1.0);
     paintOverlay(painter);
 }
 
@@ -97,6 +136,15 @@ void ViewportWidget::paintOverlay(QPainter& painter) const {
         painter.drawEllipse(toWidget(*p), 4.0, 4.0);
     }
     if (!m_selection) return;
+    if (auto shape = manipulatorGeometry(scene, *m_selection, view, pxScale))
+        paintManipulators(painter, *shape, toWidget);
+    if (const auto anchor = handlePosition(scene, *m_selection); anchor && !m_overlayMessage.isEmpty())
+        if (const auto p = view.project(*anchor)) paintOverlayMessage(painter, m_overlayMessage, toWidget(*p), rect());
+    const bool sun = gizmoGeometry(scene, *m_selection, view, pxScale).value_or(GizmoGeometry{}).sun;
+    if (m_gizmoMode == GizmoMode::Rotate && !sun) {
+        if (auto rings = rotateGeometry(scene, *m_selection, view, pxScale)) paintRotateGizmo(painter, *rings, toWidget);
+        return; // nothing to turn (a point or sphere light): no move gizmo either, the mode says rotate
+    }
     const auto gizmo = gizmoGeometry(scene, *m_selection, view, pxScale);
     if (!gizmo) return;
     const QPointF centre = toWidget(gizmo->centre);

@@ -9,15 +9,21 @@
 #pragma once
 
 #include "panels/entity_ref.h"
+#include "viewport/gizmo_mode.h"
 #include "viewport/render_frame.h"
 
+#include <QElapsedTimer>
 #include <QImage>
+#include <QTimer>
 #include <QWidget>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
 namespace wavelit::editor {
+
+inline constexpr int kCrossFadeMs = 200;
 
 class ViewportWidget : public QWidget {
     Q_OBJECT
@@ -47,6 +53,19 @@ public:
     float imagePixelsPerScreenPixel() const;
     // What the overlay draws: the scene's light handles and the selection's gizmo.
     void setOverlay(std::shared_ptr<const scene::Scene> scene, std::optional<EntityRef> selection);
+    void setGizmoMode(GizmoMode mode);
+    GizmoMode gizmoMode() const { return m_gizmoMode; }
+    // A refusal drawn beside the selection ("" hides it): a clamped manipulator drag.
+    void setOverlayMessage(const QString& message);
+    const QString& overlayMessage() const { return m_overlayMessage; }
+
+    // Cross-fade (see the class comment). 0 switches at once.
+    void setCrossFadeMs(int ms) { m_fadeMs = std::max(ms, 0); }
+    int crossFadeMs() const { return m_fadeMs; }
+    // The opacity of the new image in the latest paint: in (0, 1) while a fade was painted, -1
+    // when the latest paint showed one image.
+    double lastPaintedFade() const { return m_lastPaintedFade; }
+    bool fading() const { return !m_fadeFrom.isNull(); }
 
 signals:
     void exposureChanged(float ev);
@@ -56,7 +75,15 @@ protected:
 
 private:
     void paintOverlay(QPainter& painter) const;
+    void stopFade();
     RenderFrame m_frame;
+    GizmoMode m_gizmoMode = GizmoMode::Move;
+    QString m_overlayMessage;
+    QImage m_fadeFrom; // the preview being faded out; null when not fading
+    QElapsedTimer m_fadeClock;
+    QTimer m_fadeTimer;
+    int m_fadeMs = kCrossFadeMs;
+    double m_lastPaintedFade = -1.0;
     std::shared_ptr<const scene::Scene> m_overlayScene;
     std::optional<EntityRef> m_selection;
     QImage m_display;
