@@ -4,7 +4,6 @@
 // deleting it returns the image to the one before (the same seed draws the same samples, so to
 // float rounding: relative RMS < 1e-4); undo/redo replay both; every light type, a material, a
 // duplicate and a rename are one undo step each; refused edits throw with a reason.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 var spp = 8;
 function frame(name) { app.waitForSamples(spp, 300); app.saveImage(out + "/" + name + ".exr"); return out + "/" + name + ".exr"; }

@@ -2,7 +2,6 @@
 // wavelit-scene: scenes/ring_on_ground.wlscene
 // Bad files give an error naming the file, never a crash: each file call returns false and
 // app.lastError() says which file and what is wrong; the document is unchanged and still renders.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var data = app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/";
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 check(app.waitForSamples(1, 300) >= 1, "no first frame");

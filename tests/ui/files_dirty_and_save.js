@@ -3,7 +3,6 @@
 // The title's dirty marker: none after opening, "*" after an edit (and after an added light),
 // none after app.save(); the files on disk hold the edits (reopened and read back); the scene
 // is in the recent files; undo back to the saved state clears the marker.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var scene = app.scenePath();
 check(app.windowTitle().indexOf("*") < 0, "marker before any edit: " + app.windowTitle());
 app.setProperty("material:gold", "roughness", 0.35);

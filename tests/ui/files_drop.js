@@ -3,7 +3,6 @@
 // Drag-and-drop onto the window (real drag-enter and drop events): a .wllight is applied, an
 // .obj becomes an object, an .exr the environment map, a .wlscene opens; each drop is one undo
 // step and the scene still renders.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var res = app.environment("WAVELIT_UI_RESOURCES");
 check(app.waitForSamples(1, 300) >= 1, "no first frame");
 check(app.dropFile(res + "/lighting/sun_sky.wllight"), "drop .wllight: " + app.lastError());

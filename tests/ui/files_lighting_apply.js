@@ -9,7 +9,6 @@
 //   2. another scene — glossy_sphere lit by studio_soft, saved and reopened — renders a while,
 //      then gets the saved setup with app.applyLighting (an edit of a running session).
 //   3. its image against the inline reference's.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var res = app.environment("WAVELIT_UI_RESOURCES");
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 var spp = 8;

@@ -4,7 +4,6 @@
 // values and — rendered with the viewport's options and seed — the viewport's image at the same
 // samples (the same seed draws the same samples: relative RMS < 1e-4; the noise estimate is
 // printed for scale); a PNG with a time budget is written too.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 app.waitForSamples(8, 300);
 app.saveImage(out + "/viewport.exr");

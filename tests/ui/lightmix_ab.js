@@ -5,7 +5,6 @@
 // snapshots and the A/B split view remix the same layers with each side's weights (checked by
 // linearity: the sun's share scales exactly with its intensity); Extract sun adds a light and a
 // mask as one undo step (on the city map: courtyard has no compact sun).
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var out = app.environment("WAVELIT_SCRIPT_OUT");
 var res = app.environment("WAVELIT_UI_RESOURCES");
 var spp = app.waitForSamples(3, 300);

@@ -1,6 +1,6 @@
 # Runs one scripted UI test (tests/ui/CMakeLists.txt): copies resources/ into OUT_DIR, starts
 # `wavelit [SCENE] --script SCRIPT [ARGS]` and fails unless it exits 0. Arguments: WAVELIT, SCRIPT,
-# RESOURCES, OUT_DIR.
+# HELPERS (ui_helpers.js, put before the script), RESOURCES, OUT_DIR.
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
 file(COPY ${RESOURCES}/ DESTINATION ${OUT_DIR}/resources)
@@ -19,7 +19,11 @@ if(scene_line)
 endif()
 set(ENV{WAVELIT_SCRIPT_OUT} ${OUT_DIR})
 set(ENV{WAVELIT_UI_RESOURCES} ${OUT_DIR}/resources)
-execute_process(COMMAND ${WAVELIT} ${scene} --script ${SCRIPT} ${args}
+get_filename_component(script_name ${SCRIPT} NAME)
+file(READ ${HELPERS} helpers)
+file(READ ${SCRIPT} body)
+file(WRITE ${OUT_DIR}/${script_name} "${helpers}${body}")
+execute_process(COMMAND ${WAVELIT} ${scene} --script ${OUT_DIR}/${script_name} ${args}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 360)
 message("${out}${err}")
 if(NOT rc EQUAL 0)

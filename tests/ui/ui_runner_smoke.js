@@ -2,7 +2,6 @@
 // wavelit-scene: scenes/ring_on_ground.wlscene
 // The runner itself (run_ui_script.cmake): the scene comes from the copy of resources/, a pass
 // arrives, and a failed check exits non-zero.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 var res = app.environment("WAVELIT_UI_RESOURCES");
 check(app.scenePath().indexOf(res) == 0, "scene not from the resources copy: " + app.scenePath());
 check(app.waitForSamples(1, 300) >= 1, "no pass arrived");

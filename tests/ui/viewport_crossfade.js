@@ -8,7 +8,6 @@
 // delivers exactly one frame per edit, so the fade's target never changes under it. The fade is
 // lengthened to 600 ms here so a loaded machine still paints several frames of it; the default
 // is 200 ms. Scene: data/viewport_point_light; each edit moves the bulb.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_point_light.wlscene");
 app.waitForSamples(1, 300);
 check(app.setCrossFadeMs(600), "setCrossFadeMs");

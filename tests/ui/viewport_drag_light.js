@@ -5,8 +5,7 @@
 // 0.3 m above it: under the bulb its irradiance is ~8.8, 5.6x the sky's; 2 m away it is ~0.03,
 // 2% of the sky's. So after the drag the floor under the new position is several times brighter,
 // under the old one several times darker, and far from both (|z| ~ 2 m) within a few percent.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function regionMean(lum, cx, cy, r) { // mean luminance of the (2r+1)^2 pixels round (cx, cy)
+function regionMeanAt(lum, cx, cy, r) { // mean luminance of the (2r+1)^2 pixels round (cx, cy)
     var sum = 0, n = 0;
     for (var y = Math.round(cy) - r; y <= Math.round(cy) + r; ++y)
         for (var x = Math.round(cx) - r; x <= Math.round(cx) + r; ++x)
@@ -32,10 +31,10 @@ var first = app.waitForFrame(120);
 console.log("first frame after the drag: " + JSON.stringify(first));
 app.waitForSamples(16, 300);
 var after = app.frameLuminance();
-var nearNew = regionMean(after, floorPixel(p[0]), 32, 3) / regionMean(before, floorPixel(p[0]), 32, 3);
-var nearOld = regionMean(after, floorPixel(-1.2), 32, 3) / regionMean(before, floorPixel(-1.2), 32, 3);
-var farTop = regionMean(after, 32, 4, 3) / regionMean(before, 32, 4, 3);
-var farBottom = regionMean(after, 32, 59, 3) / regionMean(before, 32, 59, 3);
+var nearNew = regionMeanAt(after, floorPixel(p[0]), 32, 3) / regionMeanAt(before, floorPixel(p[0]), 32, 3);
+var nearOld = regionMeanAt(after, floorPixel(-1.2), 32, 3) / regionMeanAt(before, floorPixel(-1.2), 32, 3);
+var farTop = regionMeanAt(after, 32, 4, 3) / regionMeanAt(before, 32, 4, 3);
+var farBottom = regionMeanAt(after, 32, 59, 3) / regionMeanAt(before, 32, 59, 3);
 console.log("after/before: near the new position " + nearNew.toFixed(3) + ", near the old " +
             nearOld.toFixed(3) + ", far (top, bottom) " + farTop.toFixed(3) + " " + farBottom.toFixed(3));
 check(nearNew > 2.5, "not brighter under the new position: " + nearNew);

@@ -3,12 +3,6 @@
 // Issue 14: Ctrl + drag in the viewport rotates the environment (viewport_interaction.h: a drag
 // across the whole image width is 180 degrees), as one undo step, and renders the same image as
 // typing the same rotation (the same scene, so within noise).
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function relRmse(a, b) {
-    var s = 0;
-    for (var i = 0; i < a.length; ++i) s += (a[i] - b[i]) * (a[i] - b[i]) / (b[i] * b[i] + 1e-2);
-    return Math.sqrt(s / a.length);
-}
 check(app.getProperty("environment", "rotation") == 0, "the scene's environment rotation is not 0");
 app.waitForSamples(8, 300);
 var before = app.frameLuminance();

@@ -1,7 +1,6 @@
 // wavelit-args: --size 64x64 --sampler bsdf
 // Issue 14: a click in the viewport selects what is under it (light handles first, then the
 // first object along the camera ray), in sync with the outline; a click on nothing clears it.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_point_light.wlscene");
 app.waitForSamples(1, 300);
 var bulb = app.handleInViewport("light:bulb");

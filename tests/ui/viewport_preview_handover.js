@@ -4,12 +4,6 @@
 // preview's (render_controller.h, kPreviewRelError = 0.2). The test scene has one bounce
 // (direct light only), so the preview is an estimate of the same image: its relRMSE against the
 // converged path-traced frame must be that of a good preview (docs/relighting.md §7: 0.12-0.34).
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function relRmse(a, b) {
-    var s = 0;
-    for (var i = 0; i < a.length; ++i) s += (a[i] - b[i]) * (a[i] - b[i]) / (b[i] * b[i] + 1e-2);
-    return Math.sqrt(s / a.length);
-}
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_point_light.wlscene");
 app.waitForSamples(2, 300);
 // The preview is built after the first edit, once edits pause (relight_worker.h).

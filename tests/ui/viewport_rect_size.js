@@ -7,14 +7,6 @@
 // 2 * D * 0.0701 m. The same power from a 0.9 m wide panel: the floor under its centre gets less
 // (the panel's radiance drops 4.5x and most of it now arrives slanted), the floor at x = 0.55 m,
 // which is under the new panel's end, gets more.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function regionMean(lum, c, r) {
-    var sum = 0, n = 0;
-    for (var y = Math.round(c[1]) - r; y <= Math.round(c[1]) + r; ++y)
-        for (var x = Math.round(c[0]) - r; x <= Math.round(c[0]) + r; ++x)
-            if (x >= 0 && x < 64 && y >= 0 && y < 64) { sum += lum[y * 64 + x]; ++n; }
-    return sum / n;
-}
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_spot_light.wlscene");
 check(app.setMute("light:spot", true), "mute the spot");
 var name = app.addLight("rect", "panel");

@@ -8,14 +8,6 @@
 // (30 deg off the old axis) to its centre, and the old centre goes dark (30 deg off the new axis).
 // Undo restores the direction and, converged, the image. An object turns the same way: the post
 // turned about +Y by a ring drag has rotation [0, angle, 0].
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function regionMean(lum, c, r) {
-    var sum = 0, n = 0;
-    for (var y = Math.round(c[1]) - r; y <= Math.round(c[1]) + r; ++y)
-        for (var x = Math.round(c[0]) - r; x <= Math.round(c[0]) + r; ++x)
-            if (x >= 0 && x < 64 && y >= 0 && y < 64) { sum += lum[y * 64 + x]; ++n; }
-    return sum / n;
-}
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_spot_light.wlscene");
 app.waitForSamples(16, 300);
 var before = app.frameLuminance();

@@ -7,7 +7,6 @@
 // itself, of radiance 50/(4 pi^2 r^2) (127 at r = 0.1, 14 at r = 0.3) over a floor of about 1:
 // the bright disc grows with r^2. A drag inward past the centre is held at 0 (the registry's
 // minimum: a point light) and says so.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
 function brightPixels(lum, threshold) { var n = 0; for (var i = 0; i < lum.length; ++i) if (lum[i] > threshold) ++n; return n; }
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_spot_light.wlscene");
 check(app.setMute("light:spot", true), "mute the spot");

@@ -7,14 +7,6 @@
 // (d tan 20 deg + travel) / d. The floor 0.5 m from the axis (26.6 deg off it) is outside the
 // 20 deg cone and inside a 40 deg one. A drag toward the axis asks for less than the inner cone
 // (15 deg): the value is held at 15 and the viewport says so.
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function regionMean(lum, c, r) {
-    var sum = 0, n = 0;
-    for (var y = Math.round(c[1]) - r; y <= Math.round(c[1]) + r; ++y)
-        for (var x = Math.round(c[0]) - r; x <= Math.round(c[0]) + r; ++x)
-            if (x >= 0 && x < 64 && y >= 0 && y < 64) { sum += lum[y * 64 + x]; ++n; }
-    return sum / n;
-}
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_spot_light.wlscene");
 app.waitForSamples(16, 300);
 var before = app.frameLuminance();

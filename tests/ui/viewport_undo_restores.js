@@ -4,12 +4,6 @@
 // of the n-spp frame (render_frame.h: E|I_n - I_m|^2 = sigma^2 (n - m)/(n m), the error of I_n is
 // sigma^2 / n), so two independent n-spp renders differ by about sqrt(2) of it (a frame with more
 // samples than n, less).
-function check(ok, what) { if (!ok) { console.log("FAIL: " + what); app.quit(1); throw new Error(what); } }
-function relRmse(a, b) { // image_metrics.h relativeMse on luminance, epsilon 1e-2
-    var s = 0;
-    for (var i = 0; i < a.length; ++i) s += (a[i] - b[i]) * (a[i] - b[i]) / (b[i] * b[i] + 1e-2);
-    return Math.sqrt(s / a.length);
-}
 app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_point_light.wlscene");
 var m = app.waitForSamples(8, 300);
 var atM = app.frameLuminance();
