@@ -40,6 +40,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h> // getpid: concurrent runs must not share the temporary table file
+
 using namespace wavelit;
 using namespace wavelit::render;
 
@@ -107,7 +109,8 @@ std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
     const std::vector<char> bytes = plugins::tabulateMerlBrdf(
         *plugins::findBrdf("glossy"), {glm::vec3(0.9f), r}, 24, 64, 32);
     const std::string path = (std::filesystem::temp_directory_path() /
-                              ("wavelit_variance_glossy_" + std::to_string(int(r * 100)) + ".binary"))
+                              ("wavelit_variance_glossy_" + std::to_string(int(r * 100)) + "_" +
+                               std::to_string(getpid()) + ".binary"))
                                  .string();
     std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     auto table = plugins::loadMerlBrdf(path);
