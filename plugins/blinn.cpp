@@ -49,7 +49,7 @@ public:
     // ~0.83 α and wi turns twice as fast: the GGX hint (ggx.cpp), 2 α and a 6 α cap.
     BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
         const double alpha = alphaOf(p.roughness);
-        return {2.0 * alpha, 6.0 * alpha};
+        return {2.0 * alpha, 6.0 * alpha, BrdfTail::Gaussian};
     }
 
     BrdfGpuTwin gpuTwin() const override {

@@ -74,12 +74,22 @@ enum class BrdfLobeAxis {
     Mirror, // glossy: the lobe sits about the mirror direction of wo
 };
 
+// How a lobe falls off past its half-width: the product sampler's window must hold the tail
+// (render/sampling/product/env_product_tables.cpp). PowerLaw: GGX's theta^-4 keeps ~10% of the
+// lobe beyond 3 half-widths. Gaussian: exp(-tan^2/alpha^2) (Beckmann, Ward) and cos^n (Phong,
+// Blinn-Phong) hold < 1% there.
+enum class BrdfTail {
+    PowerLaw,
+    Gaussian,
+};
+
 struct BrdfLobeWidth {
     // Angular half-width of the lobe about its axis (radians): the scale the env product resolves.
     double halfWidth = 0.0;
     // Half-angle of the cone about the axis that holds the lobe (radians; >= pi: the whole sphere).
     // The oracle fits its window to it (render/sampling/oracle_sampler.h).
     double capHalfAngle = 0.0;
+    BrdfTail tail = BrdfTail::PowerLaw;
 };
 
 // The GLSL twin: a snippet file in plugins/ and the functions it defines, with the signatures

@@ -56,7 +56,7 @@ public:
     // whose half vector carries that width. 1.2 α and a 3 α cap hold the median and the tail.
     BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
         const double alpha = alphaOf(p.roughness);
-        return {1.2 * alpha, 3.0 * alpha};
+        return {1.2 * alpha, 3.0 * alpha, BrdfTail::Gaussian};
     }
 
     BrdfGpuTwin gpuTwin() const override {

@@ -61,7 +61,7 @@ public:
     BrdfLobeWidth lobeWidth(const BrdfParams& p) const override {
         const Alphas a = alphasOf(p);
         const double alpha = std::max(a.x, a.y);
-        return {2.0 * alpha, 6.0 * alpha};
+        return {2.0 * alpha, 6.0 * alpha, BrdfTail::Gaussian};
     }
 
     BrdfGpuTwin gpuTwin() const override {

@@ -11,6 +11,11 @@
 // --brdfs replaces the GGX/Lambert list with the issue-16 plugins (glossy, phong, blinn, ward
 // isotropic and anisotropic, measured) at three settings each, and the kinds with bsdf, mis and
 // wavelet (docs/brdfs.md's variance table).
+// --only TEXT keeps the materials whose name holds TEXT; --hotsub N sets the dense grid's cells
+// per texel side near the lobe (48; 12 gives the same figures to ~1% in a tenth of the time);
+// --oracle adds `oracle` to the --brdfs kinds; --detail prints (stderr) the `wavelet` mixture's
+// shares and, for the sun's disc and the rest apart, each technique's second moment alone: which
+// part of the integrand the product misjudges.
 // --gpu adds the Vulkan tracer's `wavelet` and `oracle` (built differently from the CPU's): their
 // mixtures are built on the device at the same shading point and read back (gpu_sampler_probe.h),
 // and their exact variance computed on the same dense grid. (The GPU's other kinds are twins.)
@@ -28,11 +33,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <unistd.h> // getpid: concurrent runs must not share the temporary table file
 
 using namespace wavelit;
 using namespace wavelit::render;
@@ -101,7 +109,8 @@ std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
     const std::vector<char> bytes = plugins::tabulateMerlBrdf(
         *plugins::findBrdf("glossy"), {glm::vec3(0.9f), r}, 24, 64, 32);
     const std::string path = (std::filesystem::temp_directory_path() /
-                              ("wavelit_variance_glossy_" + std::to_string(int(r * 100)) + ".binary"))
+                              ("wavelit_variance_glossy_" + std::to_string(int(r * 100)) + "_" +
+                               std::to_string(getpid()) + ".binary"))
                                  .string();
     std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     auto table = plugins::loadMerlBrdf(path);
@@ -135,6 +144,43 @@ std::vector<StudyMaterial> issue16Brdfs() {
     return out;
 }
 
+bool g_detail = false;   // --detail: the wavelet mixture's parts, on stderr
+std::string g_only;      // --only TEXT: the materials whose name holds TEXT
+int g_hotSub = 48;       // --hotsub N: the dense grid's cells per texel side near the lobe
+glm::vec3 g_sun(0.0f);   // the sun study's sun (--detail splits the moments at its disc)
+
+// Where a `wavelet` mixture loses: each technique's Var/I^2 alone, and per band of the angle
+// from the reflection vector the integrand's share against each technique's probability.
+void printWaveletDetail(const scene::Environment& env, const DenseIntegrandOptions& options,
+                        const DirectionSampler& sampler, double integral) {
+    std::fprintf(stderr, "  %s\n", sampler.describe().c_str());
+    const std::vector<ComponentPdf> parts = sampler.componentPdfs(glm::vec3(0, 1, 0));
+    // The sun's disc (and a texel around it) apart from the rest: each part's share of I and its
+    // second moment / I^2 under the mixture and under each technique alone.
+    const float cosDisc = std::cos(0.012f);
+    for (int inside = 1; inside >= 0; --inside) {
+        if (g_sun == glm::vec3(0.0f) && inside)
+            continue;
+        const DenseIntegrand part(env, [&](const glm::vec3& w) {
+            const bool in = g_sun != glm::vec3(0.0f) && glm::dot(w, g_sun) > cosDisc;
+            return in == bool(inside) ? sampler.brdfCos(w) : glm::vec3(0.0f);
+        }, options);
+        const double i2 = integral * integral;
+        const EstimatorMoments mix =
+            part.moments([&](const glm::vec3& w) { return sampler.pdfDouble(w); });
+        std::fprintf(stderr, "  %s: I share %.4f, mixture M/I^2 %.4f;", inside ? "sun disc" : "rest",
+                     part.integral() / integral, mix.secondMoment / i2);
+        for (size_t c = 0; c < parts.size(); ++c) {
+            const EstimatorMoments m = part.moments(
+                [&](const glm::vec3& w) { return sampler.componentPdfs(w)[c].pdf; });
+            std::fprintf(stderr, " %s (w %.3f) alone M/I^2 %.4g (uncovered %.2g);",
+                         parts[c].technique, parts[c].weight, m.secondMoment / i2,
+                         m.uncoveredIntegral / integral);
+        }
+        std::fprintf(stderr, "\n");
+    }
+}
+
 void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
               const std::vector<StudyMaterial>& list, vk::Context* gpu) {
     const glm::vec3 n(0, 1, 0), t(1, 0, 0), b(0, 0, -1);
@@ -143,7 +189,12 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
     const glm::vec3 reflection(-s45, s45, 0.0f);
 
     std::vector<SamplerMaterial> materials;
+    std::vector<StudyMaterial> kept;
     for (const StudyMaterial& m : list)
+        if (g_only.empty() || m.material.name.find(g_only) != std::string::npos)
+            kept.push_back(m);
+    const std::vector<StudyMaterial>& chosen = kept;
+    for (const StudyMaterial& m : chosen)
         materials.push_back(m.material);
     util::Timer timer;
     auto wavelet = DirectionSamplerTables::build(study.env, materials, SamplerKind::Wavelet);
@@ -170,9 +221,10 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
     for (size_t mi = 0; mi < materials.size(); ++mi) {
         const ShadingPoint point{n, t, b, wo, mi};
         DenseIntegrandOptions options;
-        if (list[mi].hotRadius > 0.0) { // narrow lobes: finer cells near the reflection vector
+        options.hotSub = g_hotSub;
+        if (chosen[mi].hotRadius > 0.0) { // narrow lobes: finer cells near the reflection vector
             options.hotSpots = {reflection};
-            options.hotRadius = list[mi].hotRadius;
+            options.hotRadius = chosen[mi].hotRadius;
         }
         const DirectionSampler reference(*wavelet, SamplerKind::Bsdf, point);
         const DenseIntegrand integrand(
@@ -209,6 +261,8 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
             if (k == SamplerKind::Oracle) vOracle = rel;
             if (k == SamplerKind::Mis) vMis = rel;
             if (k == SamplerKind::Bsdf) vBsdf = rel;
+            if (g_detail && k == SamplerKind::Wavelet)
+                printWaveletDetail(study.env, options, sampler, integrand.integral());
         }
         if (vOracle > 0.0)
             std::printf(" %.2f |", vWavelet / vOracle);
@@ -251,7 +305,7 @@ std::string resourceDir() {
 
 int main(int argc, char** argv) {
     std::vector<SamplerKind> kinds = allSamplerKinds();
-    bool quick = false, useGpu = false, issue16 = false;
+    bool quick = false, useGpu = false, issue16 = false, withOracle = false;
     std::string only; // --env NAME: run one study (sun, city, courtyard)
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0)
@@ -262,10 +316,20 @@ int main(int argc, char** argv) {
             issue16 = true;
         else if (std::strcmp(argv[i], "--env") == 0 && i + 1 < argc)
             only = argv[++i];
+        else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            g_only = argv[++i];
+        else if (std::strcmp(argv[i], "--hotsub") == 0 && i + 1 < argc)
+            g_hotSub = std::atoi(argv[++i]);
+        else if (std::strcmp(argv[i], "--oracle") == 0)
+            withOracle = true;
+        else if (std::strcmp(argv[i], "--detail") == 0)
+            g_detail = true;
     }
     std::vector<Study> studies;
     const float s45 = std::sqrt(0.5f);
     const glm::vec3 sun = rotateAboutZ(glm::vec3(-s45, s45, 0.0f), -kSunOffsetDeg);
+    if (only.empty() || only == "sun")
+        g_sun = glm::normalize(sun);
     if (only.empty() || only == "sun")
         studies.push_back({"sky + 0.53 deg sun at 1e5 x sky mean, 12 deg from the reflection vector",
                            makeSunSkyEnvironment(quick ? 512 : 1024, sun, kSunRatio)});
@@ -296,6 +360,8 @@ int main(int argc, char** argv) {
     // kinds' dense moments would triple the run.
     if (issue16)
         kinds = {SamplerKind::Bsdf, SamplerKind::Mis, SamplerKind::Wavelet};
+    if (issue16 && withOracle)
+        kinds.push_back(SamplerKind::Oracle);
     for (const Study& s : studies)
         runStudy(s, kinds, issue16 ? issue16Brdfs() : ggxAndLambert(), gpu.get());
     return 0;

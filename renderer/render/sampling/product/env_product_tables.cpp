@@ -27,6 +27,14 @@ constexpr uint32_t kFlatMagic = 0x31545057; // "WPT1"
 // defensive techniques sampled poorly (courtyard r = 0.2: Var/I^2 0.51 with 3, 0.13 with 4.5; the
 // product's resolution lost by the wider window is won back by the lobe refinement below its leaves).
 constexpr double kCapCoverage = 4.5;
+// A Gaussian tail (plugins/brdf.h: BrdfTail; Beckmann, Ward, cos^n lobes) holds < 1% of the lobe
+// beyond 3 half-widths, so the window need not hold 4.5: in the sun study a sun 0.21 rad from the
+// reflection vector in blinn's / ward's r = 0.2 tail sat inside the 4.5 window (0.36 rad, 32^2
+// leaves of ~0.02 rad over a 0.057 rad Gaussian), whose product misjudged lobe and sun alike (the
+// product alone: M/I^2 1.22 on the lobe vs 0.49 for BSDF sampling): Var/I^2 0.523 vs mis 0.46.
+// With 3 the window is 0.24 rad in 64x64 bins, finer leaves: 0.369 (ward 0.531 -> 0.374; phong
+// r = 0.1 0.258 -> 0.114; city within 1.5%, docs/brdfs.md).
+constexpr double kGaussianCapCoverage = 3.0;
 // Budgets (docs/sampler-variance.md): the env factor keeps 512 of a window's 1024 coefficients
 // (192 cost courtyard r = 0.2 2x in variance) and all of the whole sphere's (one table); the
 // per-point BRDF factor is not truncated (96 cost up to 1.9x: its truncation error lands on the
@@ -88,9 +96,12 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
                    "refined by the env pyramid";
         return p;
     }
-    p.lobeHalfWidth = brdf.lobeWidth(params).halfWidth;
+    const plugins::BrdfLobeWidth lobe = brdf.lobeWidth(params);
+    p.lobeHalfWidth = lobe.halfWidth;
     const double texel = envTexelAngle(env);
-    p.capHalfAngle = kCapCoverage * p.lobeHalfWidth;
+    p.capHalfAngle = (lobe.tail == plugins::BrdfTail::Gaussian ? kGaussianCapCoverage
+                                                               : kCapCoverage) *
+                     p.lobeHalfWidth;
     if (p.lobeHalfWidth < kMinLobeInEnvTexels * texel) {
         p.mode = ProductMode::BsdfLobe;
         std::snprintf(why, sizeof why,
