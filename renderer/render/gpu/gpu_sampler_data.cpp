@@ -83,7 +83,15 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             g.scalingOffset = uint32_t(d.words.size());
             for (float s : flat.scaling)
                 d.words.push_back(std::bit_cast<uint32_t>(s));
-            if (d.lit) {
+            // No precomputed pyramids for glossy lobes with a Gaussian tail (blinn, ward, phong):
+            // their hits build their own product. Read from the tables (a canonical lobe per
+            // axis bin), the exact GPU variance at the sun study's point was 4-60x worse than
+            // the per-hit product's and 2-12x worse than `mis` (blinn r = 0.1: 4.27 -> 0.354,
+            // ward aniso r = 0.2: 47.9 -> 1.23, phong r = 0.1: 6.13 -> 0.258; docs/brdfs.md).
+            const SamplerMaterial& sm = t.material(size_t(index));
+            const bool gaussianGlossy = !policy.aroundNormal && sm.brdf &&
+                                        sm.brdf->lobeWidth(sm.params).tail == plugins::BrdfTail::Gaussian;
+            if (d.lit && !gaussianGlossy) {
                 const int m = std::min(policy.productLevel, kGpuMaxProductLevel);
                 const std::vector<uint32_t> bins =
                     buildPrecomputedProducts(env, t.material(size_t(index)), m, *product);
