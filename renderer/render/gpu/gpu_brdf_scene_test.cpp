@@ -156,8 +156,24 @@ TEST(GpuBrdfScene, EveryTwinMatchesTheCpuReferencePerBlock) {
             const Config& c = kConfigs[k];
             const auto scene = makeScene(c);
             if (!gpu) {
-                gpu = create(scene, options(kind, DeviceChoice::Vulkan, 41));
+                // Created on the scene plus an unused material of every plugin here but the
+                // table-reading one, so that its kernel carries their twins (a kernel carries its
+                // scene's materials' twins only: GpuSceneData::brdfPlugins) and the swaps below
+                // need no new kernel; then swapped to the scene itself.
+                auto withTwins = std::make_shared<scene::Scene>(*scene);
+                for (const Config& other : kConfigs) {
+                    if (std::string(other.brdf) == "measured")
+                        continue;
+                    scene::Material twin;
+                    twin.id = scene::EntityId(100 + withTwins->materials.size());
+                    twin.name = std::string("unused ") + other.brdf;
+                    twin.brdf = other.brdf;
+                    withTwins->materials.push_back(twin);
+                }
+                gpu = create(withTwins, options(kind, DeviceChoice::Vulkan, 41));
                 ASSERT_TRUE(gpu);
+                auto swapped = gpu->setScene(scene, std::make_shared<const scene::Bvh>(scene::buildBvh(*scene)));
+                ASSERT_TRUE(swapped.ok()) << swapped.error().message();
             } else {
                 auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
                 auto swapped = gpu->setScene(scene, bvh);
