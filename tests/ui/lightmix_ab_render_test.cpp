@@ -11,6 +11,7 @@
 //   - the composite shows A left of the wipe and B right of it; ending the compare stops the
 //     side render; no Vulkan validation message anywhere.
 // The UI thread's longest gap while the side render starts and runs is printed (not asserted).
+#include "render/testing/median_block_error.h"
 #include "app/lightmix_compare.h"
 #include "app/main_window.h"
 #include "app/scene_document.h"
@@ -33,25 +34,12 @@
 
 using namespace wavelit;
 using namespace wavelit::editor;
+using wavelit::render::medianBlockError;
 
 namespace {
 
 constexpr int kTimeoutMs = 240000;
 constexpr int kSpp = 16;
-
-double medianBlockError(const util::ImageRGB& a, const util::ImageRGB& b) {
-    std::vector<double> errors;
-    for (int by = 0; by + 4 <= a.height; by += 4)
-        for (int bx = 0; bx + 4 <= a.width; bx += 4) {
-            double d = 0.0;
-            for (int y = by; y < by + 4; ++y)
-                for (int x = bx; x < bx + 4; ++x)
-                    d += util::luminance(a.at(x, y)) - util::luminance(b.at(x, y));
-            errors.push_back(std::abs(d) / 16.0);
-        }
-    std::nth_element(errors.begin(), errors.begin() + long(errors.size() / 2), errors.end());
-    return errors[errors.size() / 2];
-}
 
 double meanLuminance(const util::ImageRGB& image) {
     double sum = 0.0;

@@ -1,5 +1,6 @@
 // "Extract sun" (docs/lightmix.md): the sun found through the wavelet tree, its mask, and the
 // image staying the same within noise once the sun is a light and the map is masked.
+#include "render/testing/median_block_error.h"
 #include "render/lights/cpu_environment.h"
 #include "render/lights/extract_sun.h"
 #include "render/session/render_session.h"
@@ -156,20 +157,6 @@ TEST(ExtractSun, MaskIsSavedLoadedAndValidated) {
     EXPECT_NE(noMap.error().message().find("no map to mask"), std::string::npos) << noMap.error().message();
     EXPECT_NE(noMap.error().message().find("extracted.wllight"), std::string::npos);
     std::filesystem::remove_all(dir);
-}
-
-double medianBlockError(const util::ImageRGB& a, const util::ImageRGB& b) {
-    std::vector<double> errors;
-    for (int by = 0; by + 4 <= a.height; by += 4)
-        for (int bx = 0; bx + 4 <= a.width; bx += 4) {
-            double d = 0.0;
-            for (int y = by; y < by + 4; ++y)
-                for (int x = bx; x < bx + 4; ++x)
-                    d += util::luminance(a.at(x, y)) - util::luminance(b.at(x, y));
-            errors.push_back(std::abs(d) / 16.0);
-        }
-    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-    return errors[errors.size() / 2];
 }
 
 double meanLuminance(const util::ImageRGB& img) {

@@ -8,6 +8,7 @@
 // seeds): the median over 4x4 blocks of |mean difference| is at most twice the larger of the
 // seed-to-seed figures of the two estimators compared (mix vs mix, render vs render, each at two
 // seeds), and the image means agree within 5%.
+#include "render/testing/median_block_error.h"
 #include "render/session/light_groups.h"
 #include "render/session/render_session.h"
 #include "render/testing/light_group_scenes.h"
@@ -60,21 +61,6 @@ util::ImageRGB mix(const Rendered& r, const std::vector<std::pair<std::string, g
         if (it != r.groups.names.end()) weights[size_t(it - r.groups.names.begin())] = w;
     }
     return mixGroupLayers(r.layers, weights);
-}
-
-double medianBlockError(const util::ImageRGB& a, const util::ImageRGB& b) {
-    std::vector<double> errors;
-    for (int by = 0; by + 4 <= a.height; by += 4)
-        for (int bx = 0; bx + 4 <= a.width; bx += 4) {
-            double d = 0.0;
-            for (int y = by; y < by + 4; ++y)
-                for (int x = bx; x < bx + 4; ++x)
-                    d += util::luminance(a.pixels[size_t(y * a.width + x)]) -
-                         util::luminance(b.pixels[size_t(y * b.width + x)]);
-            errors.push_back(std::abs(d) / 16.0);
-        }
-    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-    return errors[errors.size() / 2];
 }
 
 double meanLuminance(const util::ImageRGB& img) {
