@@ -114,9 +114,9 @@ double dsBsdfLobeMoment(DirSampler s, SamplerGlobals g) {
 #ifdef WAVELIT_PRODUCT_SAMPLER
 // The wavelet's product for a hit: the window and env factor of the axis's bin.
 float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int envLevel) {
-    if (sm.precomputedBins > 0u && (sm.aroundNormal != 0u || s.wo.z >= WAVELIT_MIRROR_TABLE_MIN_COS)) {
-        // The axis bin's precomputed pyramid and window (render/gpu/precomputed_products.h): no
-        // per-hit product.
+    if (sm.precomputedBins > 0u) {
+        // The axis bin's precomputed pyramid and window (render/gpu/precomputed_products.h), at
+        // every view: no per-hit product.
         int bins = int(sm.precomputedBins);
         vec2 q = octToSquare(axisLocal);
         int bx = min(int(q.x * float(bins)), bins - 1), by = min(int(q.y * float(bins)), bins - 1);

@@ -62,7 +62,6 @@ std::vector<std::string> samplerShaderDefines() {
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
-        define("MIRROR_TABLE_MIN_COS", floatLiteral(kMirrorTableMinCos)),
         define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),
         define("ORACLE_MIN_ENV_SHARE", doubleLiteral(kOracleMinEnvShare)),
