@@ -124,7 +124,7 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
         // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
         // is one sharp highlight (the average would spread it over the texel's solid angle). A
         // light that fills texels keeps the texel average, which covers what it fills.
-        const glm::vec3 local = frame.toLocal(e.direction);
+        const glm::vec3 local = e.compact && m.narrow ? frame.toLocal(e.direction) : glm::vec3(0.0f);
         if (e.compact && m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
             if (local.z > 0.0f) {
                 sum += m.brdf->eval(m.params, wo, local) * local.z * e.weight;
