@@ -12,6 +12,13 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxSide = 6;
+// A rect's samples per texel it covers. Its per-point cost (the projection, then f and the
+// visibility per texel entry) scales with the samples; measured on ring_on_ground and the Cornell
+// box at 128^2 against the 512-spp reference, relRMSE 0.1300 / 0.0867 at 1 per texel, 0.1297 /
+// 0.0869 at 1/2 and 0.1336 / 0.0930 at 1/4, at 131 / 81 / 54 CPU ms per softbox drag (256^2
+// points; docs/relighting.md §7.0, fourth round). A lambert or broad glossy f varies little
+// across neighbouring texels, so where the light's total lands between them barely matters.
+constexpr double kRectSamplesPerTexel = 0.5;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 struct Basis {
@@ -26,8 +33,8 @@ Basis basisAround(const glm::vec3& n) {
 // Samples per side for a source of solid angle omega: about one sample per texel it covers (the
 // weights only decide how the light's total splits between neighbouring texels; mapping the
 // samples to texels is most of a light edit's time).
-int sidesFor(double omega, const TexelDirections& dirs) {
-    const double texels = omega / dirs.texelSolidAngle();
+int sidesFor(double omega, const TexelDirections& dirs, double samplesPerTexel = 1.0) {
+    const double texels = omega / dirs.texelSolidAngle() * samplesPerTexel;
     return std::clamp(int(std::ceil(std::sqrt(texels))), 1, kMaxSide);
 }
 
@@ -124,7 +131,7 @@ void projectRect(const TexelDirections& dirs, const scene::Light& light, const g
     if (!(glm::dot(toP, n) > 0.0f) || !(d2 > 0.0f)) return; // behind the emitting face
     const double omega = double(area) * glm::dot(toP, n) / std::sqrt(d2) / d2;
     const bool compact = omega < 0.25 * dirs.texelSolidAngle();
-    const int s = compact ? 1 : sidesFor(omega, dirs);
+    const int s = compact ? 1 : sidesFor(omega, dirs, kRectSamplesPerTexel);
     struct Bin {
         uint32_t texel;
         float weight;   // sum of cos / distance^2 over the samples in the texel
