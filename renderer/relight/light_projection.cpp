@@ -16,7 +16,7 @@ constexpr int kMaxSide = 6;
 // visibility per texel entry) scales with the samples; measured on ring_on_ground and the Cornell
 // box at 128^2 against the 512-spp reference, relRMSE 0.1300 / 0.0867 at 1 per texel, 0.1297 /
 // 0.0869 at 1/2 and 0.1336 / 0.0930 at 1/4, at 131 / 81 / 54 CPU ms per softbox drag (256^2
-// points; docs/relighting.md §7.0, fourth round). A lambert or broad glossy f varies little
+// points; docs/relighting.md §7.0a). A lambert or broad glossy f varies little
 // across neighbouring texels, so where the light's total lands between them barely matters.
 constexpr double kRectSamplesPerTexel = 0.5;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
@@ -30,7 +30,7 @@ Basis basisAround(const glm::vec3& n) {
     return {t, glm::cross(n, t)};
 }
 
-// Samples per side for a source of solid angle omega: about one sample per texel it covers (the
+// Samples per side for a source of solid angle omega: about samplesPerTexel per texel it covers (the
 // weights only decide how the light's total splits between neighbouring texels; mapping the
 // samples to texels is most of a light edit's time).
 int sidesFor(double omega, const TexelDirections& dirs, double samplesPerTexel = 1.0) {
