@@ -115,7 +115,7 @@ void addCone(Accumulator& acc, const TexelDirections& dirs, const glm::vec3& axi
 // A rect's s x s samples straight into `out`: per sample one direction, one texel lookup and a
 // scalar weight (cos at the light / distance^2; the light's radiance is uniform, so the entry's
 // RGB weight is radiance x sample area x the sum), merged per texel in a small local table.
-// This is the whole per-point cost of a rect drag (docs/relighting.md §7.0, fourth round): no
+// The projection was 60% of a rect drag's per-point cost (docs/relighting.md §7.0a). Here: no
 // Accumulator, no second normalisation, no sorted insertion of 48-byte entries per sample.
 void projectRect(const TexelDirections& dirs, const scene::Light& light, const glm::vec3& power,
                  const glm::vec3& p, std::vector<TexelWeight>& out) {
