@@ -8,8 +8,81 @@
 # report its cost next to the full one's; the quality runs report its relRMSE (coarseRelRMSE).
 # Timings vary with the machine and its load (the report says so); run it on a quiet machine.
 #   bash scripts/relight_bench.sh [CLI] [REF_SPP]   (defaults: build/release/renderer/cli/wavelit-cli, 512)
+#   bash scripts/relight_bench.sh --ab BEFORE_CLI AFTER_CLI [RUNS]
+#     the drag lists of docs/relighting.md §7.0a (four light positions, two roughness values, two
+#     object moves per scene; glossy_sphere at --level 6), run A B A B ... RUNS times (default 2),
+#     and the median incrementalCpuMs / incrementalMs per edit kind and binary. PREVIEW=N (default
+#     256) sets the preview and output size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [[ "${1:-}" == --ab ]]; then
+    before=$2 after=$3 runs=${4:-2} preview=${PREVIEW:-256}
+    out=out/relight-ab
+    mkdir -p "$out"
+    cat > "$out/ring_on_ground.edits.json" <<'JSON'
+[{"entity": "environment", "property": "rotation", "value": 90},
+ {"entity": "light:softbox", "property": "position", "value": [0.5, 3.0, 2.0]},
+ {"entity": "light:softbox", "property": "position", "value": [0.7, 3.0, 1.8]},
+ {"entity": "light:softbox", "property": "position", "value": [0.9, 2.9, 1.6]},
+ {"entity": "light:softbox", "property": "position", "value": [1.1, 2.8, 1.4]},
+ {"entity": "material:gold", "property": "roughness", "value": 0.4},
+ {"entity": "material:gold", "property": "roughness", "value": 0.3},
+ {"entity": "object:ring", "property": "translation", "value": [0.3, 0.12, 0.0]},
+ {"entity": "object:ring", "property": "translation", "value": [0.35, 0.12, 0.05]}]
+JSON
+    cat > "$out/cornell_box.edits.json" <<'JSON'
+[{"entity": "light:ceiling_light", "property": "position", "value": [0.1, 1.98, 0.0]},
+ {"entity": "light:ceiling_light", "property": "position", "value": [0.15, 1.98, 0.05]},
+ {"entity": "light:ceiling_light", "property": "position", "value": [0.2, 1.98, 0.1]},
+ {"entity": "light:ceiling_light", "property": "position", "value": [0.0, 1.98, 0.0]},
+ {"entity": "material:blue_box", "property": "roughness", "value": 0.5},
+ {"entity": "material:blue_box", "property": "roughness", "value": 0.4},
+ {"entity": "object:small_box", "property": "translation", "value": [0.2, 0.0, 0.1]},
+ {"entity": "object:small_box", "property": "translation", "value": [0.25, 0.0, 0.1]}]
+JSON
+    cat > "$out/glossy_sphere.edits.json" <<'JSON'
+[{"entity": "environment", "property": "rotation", "value": 120},
+ {"entity": "light:sun", "property": "direction", "value": [0.3, -0.8, -0.5]},
+ {"entity": "light:sun", "property": "direction", "value": [0.35, -0.8, -0.45]},
+ {"entity": "material:chrome", "property": "roughness", "value": 0.25},
+ {"entity": "material:chrome", "property": "roughness", "value": 0.2}]
+JSON
+    for s in ring_on_ground cornell_box glossy_sphere; do
+        level=auto
+        [[ $s == glossy_sphere ]] && level=6
+        for r in $(seq "$runs"); do
+            for v in before after; do
+                cli=$before
+                [[ $v == after ]] && cli=$after
+                echo "relight bench --ab: $s $v run $r"
+                "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-$v" \
+                    --report "$out/$s-$v-$r.json" --preview "$preview" --width "$preview" --height "$preview" \
+                    --threads 2 --level "$level" --skip-full-rebuild >/dev/null
+            done
+        done
+    done
+    python3 - "$out" "$runs" <<'PY'
+import json, statistics, sys
+out, runs = sys.argv[1], int(sys.argv[2])
+print("| scene | edit | points touched | before CPU ms (n) | after CPU ms (n) | after / before | before -> after wall ms |")
+print("|---|---|---|---|---|---|---|")
+for s in ("ring_on_ground", "cornell_box", "glossy_sphere"):
+    rows = {}
+    for v in ("before", "after"):
+        for r in range(1, runs + 1):
+            for e in json.load(open(f"{out}/{s}-{v}-{r}.json"))["edits"]:
+                key = f"{e['entity']} {e['property']}"
+                rows.setdefault(key, {"before": [], "after": [], "points": e["pointsTouched"]})[v].append(
+                    (e["incrementalCpuMs"], e["incrementalMs"]))
+    for key, d in rows.items():
+        cpu = {v: statistics.median(c for c, _ in d[v]) for v in ("before", "after")}
+        wall = {v: statistics.median(w for _, w in d[v]) for v in ("before", "after")}
+        print(f"| {s} | {key} | {d['points']} | {cpu['before']:.1f} ({len(d['before'])}) | {cpu['after']:.1f} "
+              f"({len(d['after'])}) | {cpu['after'] / max(cpu['before'], 1e-3):.2f} | {wall['before']:.0f} -> {wall['after']:.0f} |")
+PY
+    uptime
+    exit 0
+fi
 cli=${1:-build/release/renderer/cli/wavelit-cli}
 spp=${2:-512}
 out=out/relight

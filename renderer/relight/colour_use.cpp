@@ -71,4 +71,20 @@ ColourUse colourUseOf(const plugins::Brdf& brdf, const plugins::BrdfParams& para
     return linear ? ColourUse::Linear : ColourUse::Affine;
 }
 
+bool greyAffine(const plugins::Brdf& brdf, const plugins::BrdfParams& params) {
+    static const auto pairs = probePairs();
+    plugins::BrdfParams black = params, white = params, red = params;
+    black.baseColor = glm::vec3(0.0f);
+    white.baseColor = glm::vec3(1.0f);
+    red.baseColor = glm::vec3(1.0f, 0.0f, 0.0f);
+    for (const auto& [wo, wi] : pairs) {
+        const glm::vec3 f0 = brdf.eval(black, wo, wi), f1 = brdf.eval(white, wo, wi);
+        const float scale = std::max({std::abs(f0.x), std::abs(f0.y), std::abs(f0.z), std::abs(f1.x),
+                                      std::abs(f1.y), std::abs(f1.z)});
+        if (!close(f0, glm::vec3(f0.x), scale) || !close(f1, glm::vec3(f1.x), scale)) return false;
+        if (!close(brdf.eval(red, wo, wi), glm::vec3(f1.x, f0.x, f0.x), scale)) return false;
+    }
+    return true;
+}
+
 } // namespace wavelit::relight

@@ -9,7 +9,8 @@
 // radiance E / (pi sin^2 theta_s) over its cone (E in one texel when its diameter is 0). A light
 // that covers less than a quarter of a texel is one entry at its centre direction with its exact
 // total; a larger one is integrated with s x s stratified samples, s from its solid angle in
-// texels (about one per texel, at most 6 x 6), each sample's weight landing in the texel its direction falls in.
+// texels (about one per texel for a sphere or sun cone, one per two texels for a rect; at most
+// 6 x 6), each sample's weight landing in the texel its direction falls in.
 #pragma once
 
 #include "relight/texel_directions.h"

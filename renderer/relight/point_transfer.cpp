@@ -27,6 +27,19 @@ bool blockedByOthers(const PointState& s, size_t texel) {
     return false;
 }
 
+// f at the material's primary parameters, and at black when `black` is given: one evaluation
+// for a grey-affine BRDF (ResolvedMaterial::oneEval), else one per parameter set.
+glm::vec3 evalPair(const ResolvedMaterial& m, const plugins::BrdfParams& params, const plugins::BrdfParams* black,
+                   const glm::vec3& wo, const glm::vec3& wi, glm::vec3& f0) {
+    if (black && m.oneEval && black == &m.black && &params == &m.params) {
+        const glm::vec3 f = m.brdf->eval(m.red, wo, wi);
+        f0 = glm::vec3(f.y);
+        return glm::vec3(f.x);
+    }
+    if (black) f0 = m.brdf->eval(*black, wo, wi);
+    return m.brdf->eval(params, wo, wi);
+}
+
 // cosine x f at a texel above the horizon, without visibility, with the given parameters, and
 // with `black` too when given (one local direction and one lobe test for both).
 glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const util::Frame& frame,
@@ -42,15 +55,18 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
         for (int k = 0; k < kCount; ++k) {
             const glm::vec3 l = frame.toLocal(sub[k]);
             if (l.z > 0.0f) {
-                sum += m.brdf->eval(params, wo, l) * l.z;
-                if (black) sum0 += m.brdf->eval(*black, wo, l) * l.z;
+                glm::vec3 f0(0.0f);
+                sum += evalPair(m, params, black, wo, l, f0) * l.z;
+                sum0 += f0 * l.z;
             }
         }
         if (black) *blackOut = sum0 / float(kCount);
         return sum / float(kCount);
     }
-    if (black) *blackOut = m.brdf->eval(*black, wo, local) * local.z;
-    return m.brdf->eval(params, wo, local) * local.z;
+    glm::vec3 f0(0.0f);
+    const glm::vec3 f = evalPair(m, params, black, wo, local, f0);
+    if (black) *blackOut = f0 * local.z;
+    return f * local.z;
 }
 
 bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) && !blockedByOthers(s, texel); }
@@ -124,11 +140,12 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
         // light is, not as the texel's average: a sun a tenth of a texel wide reflected in chrome
         // is one sharp highlight (the average would spread it over the texel's solid angle). A
         // light that fills texels keeps the texel average, which covers what it fills.
-        const glm::vec3 local = frame.toLocal(e.direction);
+        const glm::vec3 local = e.compact && m.narrow ? frame.toLocal(e.direction) : glm::vec3(0.0f);
         if (e.compact && m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
             if (local.z > 0.0f) {
-                sum += m.brdf->eval(m.params, wo, local) * local.z * e.weight;
-                if (black) sum0 += m.brdf->eval(m.black, wo, local) * local.z * e.weight;
+                glm::vec3 f0(0.0f);
+                sum += evalPair(m, m.params, black ? &m.black : nullptr, wo, local, f0) * local.z * e.weight;
+                sum0 += f0 * local.z * e.weight;
             }
             continue;
         }
@@ -156,6 +173,9 @@ ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
     if (r.colourUse == ColourUse::Linear || r.colourUse == ColourUse::Affine) r.params.baseColor = glm::vec3(1.0f);
     r.black = r.params;
     r.black.baseColor = glm::vec3(0.0f);
+    r.red = r.params;
+    r.red.baseColor = glm::vec3(1.0f, 0.0f, 0.0f);
+    r.oneEval = r.colourUse == ColourUse::Affine && greyAffine(*r.brdf, r.params);
     const plugins::BrdfLobeWidth lobe = r.brdf->lobeWidth(r.params);
     if (r.brdf->lobeAxis() == plugins::BrdfLobeAxis::Mirror && lobe.halfWidth < 2.0 * texelRadius) {
         r.narrow = true;

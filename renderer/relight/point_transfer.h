@@ -67,6 +67,10 @@ struct ResolvedMaterial {
     // The parameters T is computed with: the material's own, or white for Linear / Affine.
     plugins::BrdfParams params;
     plugins::BrdfParams black; // Affine: the same with baseColor 0
+    // Affine with a grey a and b (greyAffine): f(white) and f(black) from one evaluation at
+    // `red` (baseColor (1, 0, 0)): red channel white, green channel black.
+    bool oneEval = false;
+    plugins::BrdfParams red;
     ColourUse colourUse = ColourUse::Fixed;
     glm::vec3 baseColor{0.8f}; // the material's own colour (mixed in by the image)
     glm::vec3 emission{0.0f};

@@ -176,6 +176,52 @@ TEST(RelightColourUse, ClassifiesThePluginsAndRefusesANonAffineOne) {
     }
 }
 
+// One evaluation at colour (1, 0, 0) stands for f(white) and f(black) only when both are grey
+// (greyAffine): ggx is (its speed-up relies on it), and the red and green channels of f(red) then
+// equal f(white) and f(black) at directions the probe did not use; an affine BRDF with a coloured
+// offset is refused.
+TEST(RelightColourUse, GreyAffineOneEvaluationGivesWhiteAndBlack) {
+    plugins::BrdfParams params(glm::vec3(0.5f), 0.3f);
+    const plugins::Brdf& ggx = *plugins::findBrdf("ggx");
+    EXPECT_TRUE(greyAffine(ggx, params));
+    plugins::BrdfParams black = params, white = params, red = params;
+    black.baseColor = glm::vec3(0.0f);
+    white.baseColor = glm::vec3(1.0f);
+    red.baseColor = glm::vec3(1.0f, 0.0f, 0.0f);
+    for (const glm::vec3& wo : {glm::vec3(0.3f, -0.2f, 0.8f), glm::vec3(0.7f, 0.1f, 0.2f)})
+        for (const glm::vec3& wi : {glm::vec3(-0.25f, 0.3f, 0.7f), glm::vec3(-0.6f, 0.05f, 0.3f), glm::vec3(0.1f, 0.9f, 0.1f)}) {
+            const glm::vec3 o = glm::normalize(wo), i = glm::normalize(wi);
+            const glm::vec3 f = ggx.eval(red, o, i), f0 = ggx.eval(black, o, i), f1 = ggx.eval(white, o, i);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_NEAR(f.x, f1[k], 1e-6 * std::max(1.0f, f1[k]));
+                EXPECT_NEAR(f.y, f0[k], 1e-6 * std::max(1.0f, f0[k]));
+            }
+        }
+    struct Tinted final : plugins::Brdf { // f = c / pi + (0.1, 0.2, 0.3) / pi: affine, not grey
+        const plugins::Brdf& base = *plugins::findBrdf("lambert");
+        const char* name() const override { return "tinted"; }
+        std::span<const plugins::BrdfParameterInfo> parameters() const override { return base.parameters(); }
+        plugins::BrdfLobeAxis lobeAxis() const override { return base.lobeAxis(); }
+        plugins::BrdfLobeWidth lobeWidth(const plugins::BrdfParams& p) const override { return base.lobeWidth(p); }
+        plugins::BrdfGpuTwin gpuTwin() const override { return {}; }
+        glm::vec3 eval(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+            return base.eval(p, wo, wi) + glm::vec3(0.1f, 0.2f, 0.3f) * base.eval(plugins::BrdfParams(glm::vec3(1.0f), 1.0f), wo, wi);
+        }
+        plugins::BrdfSample sample(const plugins::BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
+            return base.sample(p, wo, u1, u2);
+        }
+        float pdf(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+            return base.pdf(p, wo, wi);
+        }
+        std::optional<glm::vec2> invert(const plugins::BrdfParams& p, const glm::vec3& wo,
+                                        const glm::vec3& wi) const override {
+            return base.invert(p, wo, wi);
+        }
+    } tinted;
+    EXPECT_EQ(colourUseOf(tinted, params), ColourUse::Affine);
+    EXPECT_FALSE(greyAffine(tinted, params));
+}
+
 TEST(RelightSphereLevel, FinerGridOnlyForALobeNarrowerThanHalfATexel) {
     scene::Scene scene = testing::makeRelightScene(); // GGX r = 0.3 on the box
     EXPECT_EQ(chooseSphereLevel(scene).level, 5) << chooseSphereLevel(scene).reason;
