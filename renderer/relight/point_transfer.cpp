@@ -64,9 +64,7 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
         return sum / float(kCount);
     }
     glm::vec3 f0(0.0f);
-    const glm::vec3 f = m.factorTable && &params == &m.params && (!black || black == &m.black)
-                            ? m.factorTable->lookup(wo, local, black ? &f0 : nullptr)
-                            : evalPair(m, params, black, wo, local, f0);
+    const glm::vec3 f = evalPair(m, params, black, wo, local, f0);
     if (black) *blackOut = f0 * local.z;
     return f * local.z;
 }
@@ -161,13 +159,7 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
 
 } // namespace
 
-namespace {
-bool sameParams(const plugins::BrdfParams& a, const plugins::BrdfParams& b) {
-    return a.baseColor == b.baseColor && a.roughness == b.roughness && a.anisotropy == b.anisotropy && a.table == b.table;
-}
-} // namespace
-
-ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius, const ResolvedMaterial* previous) {
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
     ResolvedMaterial r;
     r.brdf = plugins::findBrdf(m.brdf);
     if (!r.brdf) r.brdf = plugins::findBrdf(plugins::defaultBrdfName());
@@ -189,15 +181,6 @@ ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius, c
         r.narrow = true;
         const double cap = lobe.capHalfAngle + 2.0 * texelRadius;
         r.cosCap = cap >= 3.14159265358979 ? -2.0f : float(std::cos(cap));
-    }
-    if (!r.narrow && BrdfFactorTable::suits(*r.brdf, r.params)) {
-        const bool affine = r.colourUse == ColourUse::Affine;
-        if (previous && previous->factorTable && previous->brdf == r.brdf && previous->colourUse == r.colourUse &&
-            previous->oneEval == r.oneEval && sameParams(previous->params, r.params))
-            r.factorTable = previous->factorTable;
-        else
-            r.factorTable = std::make_shared<const BrdfFactorTable>(*r.brdf, r.params, affine ? &r.black : nullptr,
-                                                                    r.oneEval, r.red);
     }
     return r;
 }

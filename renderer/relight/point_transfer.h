@@ -20,7 +20,6 @@
 // the environment term and one term per light, each rebuilt alone when its light changes.
 #pragma once
 
-#include "relight/brdf_factor_table.h"
 #include "relight/colour_use.h"
 #include "relight/environment_factor.h"
 #include "relight/object_occluder.h"
@@ -32,7 +31,6 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace wavelit::relight {
@@ -81,16 +79,10 @@ struct ResolvedMaterial {
     // the centre, which would alias a highlight in or out of the texel.
     bool narrow = false;
     float cosCap = 1.0f;
-    // An isotropic glossy lobe wider than a texel: f read from a table built once per edit
-    // (brdf_factor_table.h) instead of one plugin evaluation per lit texel and point.
-    std::shared_ptr<const BrdfFactorTable> factorTable;
 };
 
-// The material as the preview uses it; texelRadius from the sphere grid. `previous` (the same
-// material before an edit) lends its factor table when the BRDF and its parameters are unchanged,
-// so a light drag does not rebuild every material's table.
-ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius,
-                                 const ResolvedMaterial* previous = nullptr);
+// The material as the preview uses it; texelRadius from the sphere grid.
+ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius);
 
 // What every point's computation reads; immutable while points are computed in parallel.
 struct TransferContext {

@@ -27,13 +27,8 @@ void RelightPreview::resolveMaterials() {
     // The lights at unit power, once per scene (not per pixel: a copy holds the light's name).
     m_unitLights.clear();
     for (const scene::Light& light : m_scene->lighting.lights) m_unitLights.push_back(unitPowerLight(light));
-    // The materials before this edit lend their factor tables where nothing of theirs changed.
-    const std::vector<ResolvedMaterial> previous = std::move(m_materials);
     m_materials.clear();
-    auto resolve = [&](const scene::Material& m) {
-        const size_t i = m_materials.size();
-        return resolveMaterial(m, m_dirs.texelRadius(), i < previous.size() ? &previous[i] : nullptr);
-    };
+    auto resolve = [&](const scene::Material& m) { return resolveMaterial(m, m_dirs.texelRadius()); };
     for (const scene::Material& m : m_scene->materials) m_materials.push_back(resolve(m));
     m_materials.push_back(resolve(scene::Material{})); // index == size: the default material
 }
