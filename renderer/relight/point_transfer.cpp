@@ -159,6 +159,20 @@ void compress(std::vector<glm::dvec3>& texels, int level, size_t keep, SparseTra
         [](const glm::dvec3& v) { return glm::vec3(v); });
 }
 
+// compress(), or compressGrey() when every texel is grey (a lambert's or any colour-linear
+// BRDF's f(white) with grey visibility): the same coefficients in a third of the transform.
+void compressMaybeGrey(std::vector<glm::dvec3>& texels, int level, size_t keep, SparseTransfer& out) {
+    for (const glm::dvec3& v : texels)
+        if (v.x != v.y || v.x != v.z) {
+            compress(texels, level, keep, out);
+            return;
+        }
+    thread_local std::vector<double> grey;
+    grey.resize(texels.size());
+    for (size_t i = 0; i < texels.size(); ++i) grey[i] = texels[i].x;
+    compressGrey(grey, level, keep, out);
+}
+
 // <T, L_k> for the primary parameters, and for black when `black` is given.
 glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                         const scene::Light& light, glm::vec3* black) {
@@ -306,8 +320,8 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
             texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0)) * finest;
             if (affine) texels0[t] = glm::dvec3(f0) * finest;
         }
-    compress(texels, level, ctx.keep, s.transfer);
-    if (affine) compress(texels0, level, ctx.keep, s.transfer0);
+    compressMaybeGrey(texels, level, ctx.keep, s.transfer);
+    if (affine) compressMaybeGrey(texels0, level, ctx.keep, s.transfer0);
     else s.transfer0 = SparseTransfer{};
 }
 
