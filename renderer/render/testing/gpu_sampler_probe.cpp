@@ -174,12 +174,13 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
             return util::makeError(util::ErrorKind::Unsupported, "", "probe: " + problem);
         scene.samplerIndexOfMaterial.push_back(int(p.material));
         const float type = float(gpuBrdfType(*m.brdf, m.params));
+        const auto table = brdfTables->offsetOf.find(m.params.table.get()); // 0: the zero table
         const float v[20] = {p.t.x,  p.t.y,  p.t.z,  0,    p.b.x,  p.b.y,  p.b.z,
                              0,      p.n.x,  p.n.y,  p.n.z, type, p.wo.x, p.wo.y,
                              p.wo.z,
-                             plugins::brdfReadsFile(*m.brdf)
-                                 ? float(brdfTables->offsetOf.at(m.params.table.get()))
-                                 : m.params.roughness,
+                             !plugins::brdfReadsFile(*m.brdf) ? m.params.roughness
+                             : table != brdfTables->offsetOf.end() ? float(table->second)
+                                                                   : 0.0f,
                              m.params.baseColor.x,
                              m.params.baseColor.y, m.params.baseColor.z, 0};
         in.insert(in.end(), v, v + 20);
