@@ -9,8 +9,9 @@
 // construction times. docs/sampler-variance.md holds a run's output. Plain main: no timing is
 // asserted anywhere (architecture.md §8).
 // --brdfs replaces the GGX/Lambert list with the issue-16 plugins (glossy, phong, blinn, ward
-// isotropic and anisotropic, measured) at three settings each, and the kinds with bsdf, mis and
-// wavelet (docs/brdfs.md's variance table).
+// isotropic and anisotropic, measured) at three settings each, plus `ggx` (the default scene's
+// material) at the same three and `lambert`, and the kinds with bsdf, mis and wavelet
+// (docs/brdfs.md's variance table).
 // --only TEXT keeps the materials whose name holds TEXT; --hotsub N sets the dense grid's cells
 // per texel side near the lobe (48; 12 gives the same figures to ~1% in a tenth of the time);
 // --oracle adds `oracle` to the --brdfs kinds; --detail prints (stderr) the `wavelet` mixture's
@@ -126,7 +127,7 @@ std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
 // `glossy` tabulated at the same roughness (24 x 64 x 32 bins, as the shipped example).
 std::vector<StudyMaterial> issue16Brdfs() {
     std::vector<StudyMaterial> out;
-    for (const char* brdf : {"glossy", "phong", "blinn", "ward", "ward aniso", "measured"})
+    for (const char* brdf : {"ggx", "glossy", "phong", "blinn", "ward", "ward aniso", "measured"})
         for (float r : {0.1f, 0.2f, 0.5f}) {
             const bool aniso = std::string(brdf) == "ward aniso";
             const bool measured = std::string(brdf) == "measured";
@@ -141,6 +142,7 @@ std::vector<StudyMaterial> issue16Brdfs() {
                                         : plugin->lobeWidth(params).capHalfAngle;
             out.push_back({{name, plugin, params}, r < 0.3f ? 1.5 * cap + 0.01 : 0.0});
         }
+    out.push_back({{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}, 0.0});
     return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <numbers>
 #include <string>
 
 namespace wavelit::render {
@@ -17,6 +18,18 @@ size_t GpuSamplerData::bytes() const {
 }
 
 namespace {
+
+// Which hits read the precomputed per-axis-bin pyramids (precomputed_products.h): those of a lobe
+// about the normal as wide as the hemisphere (Lambert's, policy.lobeHalfWidth = pi/2), the only
+// lobe whose shape does not move with the view, so the canonical lobe (seen at normal incidence)
+// is the hit's own. Every other lobe builds its product per hit: at the study's 45-degree view
+// the tables were up to 4000x worse than the per-hit product (docs/brdfs.md, last section):
+// a mirror lobe seen at 45 degrees is compressed by cos 45 across the plane of incidence and
+// its axis is up to half an axis bin off the bin's centre, and a measured table's glossy lobe
+// about the normal sits at the mirror direction, not at the normal.
+bool readsPrecomputedPyramids(const ProductPolicy& policy) {
+    return policy.aroundNormal && policy.lobeHalfWidth >= 0.5 * std::numbers::pi - 1e-9;
+}
 
 // The oracle needs no tables: its material entry says how to fit and mix the per-hit product.
 GpuSamplerMaterial oracleMaterial(const SamplerMaterial& m) {
@@ -83,15 +96,10 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             g.scalingOffset = uint32_t(d.words.size());
             for (float s : flat.scaling)
                 d.words.push_back(std::bit_cast<uint32_t>(s));
-            // No precomputed pyramids for glossy lobes with a Gaussian tail (blinn, ward, phong):
-            // their hits build their own product. Read from the tables (a canonical lobe per
-            // axis bin), the exact GPU variance at the sun study's point was 4-60x worse than
-            // the per-hit product's and 2-12x worse than `mis` (blinn r = 0.1: 4.27 -> 0.354,
-            // ward aniso r = 0.2: 47.9 -> 1.23, phong r = 0.1: 6.13 -> 0.258; docs/brdfs.md).
-            const SamplerMaterial& sm = t.material(size_t(index));
-            const bool gaussianGlossy = !policy.aroundNormal && sm.brdf &&
-                                        sm.brdf->lobeWidth(sm.params).tail == plugins::BrdfTail::Gaussian;
-            if (d.lit && !gaussianGlossy) {
+            const bool readTables = readsPrecomputedPyramids(policy);
+            if (!readTables && !policy.aroundNormal && policy.capHalfAngle < kGpuNarrowLobeCap)
+                g.mixBsdf = float(std::max(policy.mixBsdf, kGpuNarrowLobeMixBsdf));
+            if (d.lit && readTables) {
                 const int m = std::min(policy.productLevel, kGpuMaxProductLevel);
                 const std::vector<uint32_t> bins =
                     buildPrecomputedProducts(env, t.material(size_t(index)), m, *product);

@@ -35,6 +35,15 @@ inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense
 // refinement and the env's quadtree refine below the leaves (docs/wavelet-sampler.md "Constants").
 inline constexpr int kGpuMaxProductLevel = 4;
 
+// The defensive BSDF share of a narrow mirror lobe's per-hit product on the GPU (the policy's
+// kWaveletBsdfShare, 0.1, elsewhere): a lobe whose cap is under kGpuNarrowLobeCap (the policy's
+// 64 x 64-bin class) has a window whose 16^2 leaves are wider than the CPU's 32^2 resolve, and
+// the lobe's own sampling follows it exactly. Exact GPU variance at the sun study: ggx r = 0.1
+// 0.466 -> 0.326 (mis 0.438), blinn r = 0.2 0.523 -> 0.418 (mis 0.46); 0.25 for every mirror
+// lobe cost the wider ones up to 1.4x (ggx r = 0.5 0.76 -> 1.06): docs/brdfs.md, last section.
+inline constexpr double kGpuNarrowLobeCap = 0.3; // radians
+inline constexpr double kGpuNarrowLobeMixBsdf = 0.25;
+
 // The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the
 // exact axis, like the CPU's (oracle_sampler.h), but at 2^5 x 2^5 leaves, each the mean of
 // L x BRDF x cos over its 2 x 2 sub-cells (env-weighted, so the leaf masses are those of the 64^2

@@ -8,10 +8,9 @@
 // too). A hit reads its bin's pyramid instead of building one. The axis is binned on a 2^B x 2^B
 // octahedral grid, B = max(kAxisBinLevel, the material's own bin level), each bin over the window
 // of the material's bin that holds its centre (MaterialProductTables: that window holds the lobe's
-// cap about any axis in the bin). Every hit of such a material reads its table, at any view: at
-// normal incidence a diffuse lobe is exact, and a glossy lobe at a grazing view (stretched, cut by
-// the horizon) is matched worse, but building its own product cost a fifth of the default
-// scene's pass for no measurable gain per sample (docs/performance.md "Tables at every view").
+// cap about any axis in the bin). Only hemisphere-wide lobes about the normal (Lambert's) get
+// tables (gpu_sampler_data.cpp): at normal incidence such a lobe is exact, and its shape does not
+// move with the view; every hit of such a material reads its table.
 //
 // Sampling stays exact whatever the table's mismatch with the hit: draws and pdfs descend the same
 // table (the pdf is a function of the table, not of the integrand), the lobe refinement and the

@@ -1,6 +1,7 @@
 #include "render/testing/gpu_sampler_probe.h"
 
 #include "render/gpu/brdf_shader_source.h"
+#include "render/gpu/gpu_brdf_tables.h"
 #include "render/gpu/gpu_path_tracer.h"
 #include "render/gpu/gpu_scene_data.h"
 #include "render/gpu/sampler_shader_defines.h"
@@ -150,6 +151,20 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
     SceneSamplerTables scene;
     scene.tables = std::shared_ptr<const DirectionSamplerTables>(
         std::shared_ptr<const DirectionSamplerTables>{}, &tables); // not owned
+    // Measured materials read their tables as the tracer's kernel does (gpu_brdf_tables.h): the
+    // kernel binds them at binding 6 and a point carries its table's offset in its roughness slot.
+    scene::Scene tableScene;
+    for (const ShadingPoint& p : points)
+        if (p.material < tables.materialCount() && tables.material(p.material).params.table) {
+            scene::Material m;
+            m.brdf = "measured";
+            m.brdfTable = tables.material(p.material).params.table;
+            tableScene.materials.push_back(m);
+        }
+    auto brdfTables = packGpuBrdfTables(tableScene);
+    if (!brdfTables)
+        return brdfTables.error();
+    const bool bindTables = !tableScene.materials.empty();
     std::vector<float> in;
     for (const ShadingPoint& p : points) {
         if (p.material >= tables.materialCount())
@@ -159,18 +174,25 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
             return util::makeError(util::ErrorKind::Unsupported, "", "probe: " + problem);
         scene.samplerIndexOfMaterial.push_back(int(p.material));
         const float type = float(gpuBrdfType(*m.brdf, m.params));
+        const auto table = brdfTables->offsetOf.find(m.params.table.get()); // 0: the zero table
         const float v[20] = {p.t.x,  p.t.y,  p.t.z,  0,    p.b.x,  p.b.y,  p.b.z,
                              0,      p.n.x,  p.n.y,  p.n.z, type, p.wo.x, p.wo.y,
-                             p.wo.z, m.params.roughness, m.params.baseColor.x,
+                             p.wo.z,
+                             !plugins::brdfReadsFile(*m.brdf) ? m.params.roughness
+                             : table != brdfTables->offsetOf.end() ? float(table->second)
+                                                                   : 0.0f,
+                             m.params.baseColor.x,
                              m.params.baseColor.y, m.params.baseColor.z, 0};
         in.insert(in.end(), v, v + 20);
     }
     auto packed = packGpuSamplers(scene, kind, points.size());
     if (!packed)
         return packed.error();
+    std::vector<std::string> defines = samplerShaderDefines();
+    if (bindTables)
+        defines.push_back(std::string(kBrdfTableBindingDefine) + "=6");
     auto spirv = compileWithBrdfDispatch(kernelSource(kind), "gpu_sampler_probe.comp",
-                                         {{gpuShaderDirectory(), gpuPluginDirectory()},
-                                          samplerShaderDefines()});
+                                         {{gpuShaderDirectory(), gpuPluginDirectory()}, defines});
     if (!spirv)
         return spirv.error();
     const size_t total = points.size() * size_t(drawsPerPoint);
@@ -180,7 +202,8 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
     {
         auto kernel = vk::ComputeKernel::create(
             context, {"gpu sampler probe", *spirv,
-                      std::vector<vk::BindingKind>(6, vk::BindingKind::StorageBuffer), 44});
+                      std::vector<vk::BindingKind>(bindTables ? 7 : 6, vk::BindingKind::StorageBuffer),
+                      44});
         if (!kernel)
             return kernel.error();
         const GpuSamplerData& d = *packed;
@@ -192,9 +215,10 @@ util::Result<GpuProbeResult> probeGpuSampler(vk::Context& context,
                      {d.words.data(), d.words.size() * sizeof(uint32_t)},
                      {in.data(), in.size() * sizeof(float)},
                      {nullptr, samples.size() * sizeof(float)},
-                     {nullptr, info.size() * sizeof(float)}};
+                     {nullptr, info.size() * sizeof(float)},
+                     {brdfTables->floats.data(), brdfTables->floats.size() * sizeof(float)}};
         std::vector<vk::Buffer> buffers;
-        for (uint32_t i = 0; i < 6; ++i) {
+        for (uint32_t i = 0; i < (bindTables ? 7u : 6u); ++i) {
             auto b = vk::Buffer::create(context, blobs[i].bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                         "probe buffer");
             if (!b)

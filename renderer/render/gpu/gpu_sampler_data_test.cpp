@@ -1,0 +1,70 @@
+// Which `wavelet` materials the Vulkan tracer lets read the precomputed axis-bin pyramids, and
+// which get the larger defensive BSDF share (gpu_sampler_data.h), decided from the lobe traits
+// alone: only a lobe about the normal as wide as the hemisphere (Lambert) reads the pyramids;
+// mirror lobes and a measured table's lobe build their product per hit; a mirror lobe whose cap
+// is under kGpuNarrowLobeCap gets kGpuNarrowLobeMixBsdf, the others the policy's share. The
+// variance figures behind the rule are in docs/brdfs.md ("The Vulkan `wavelet` on these plugins").
+#include "render/gpu/gpu_sampler_data.h"
+
+#include "plugins/brdf_table.h"
+#include "render/sampling/direction_sampler_tables.h"
+#include "render/sampling/sampler_constants.h"
+#include "render/sampling/sampler_tables_cache.h"
+#include "util/image.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace wavelit::render {
+namespace {
+
+TEST(GpuSamplerData, OnlyHemisphereWideLobesAboutTheNormalReadThePrecomputedPyramids) {
+    // 256 x 128: env texels of 0.025 rad, so blinn r = 0.2 (half-width 0.08) is sampled by the
+    // product, not left to BSDF sampling.
+    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    image->at(40, 30) = glm::vec3(1e4f); // a small bright source: the env is lit and uneven
+    scene::Environment env;
+    env.image = image;
+    auto table = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
+                                       "/brdfs/glossy-copper-r05.binary");
+    ASSERT_TRUE(table.ok()) << table.error().message();
+
+    struct Expect {
+        SamplerMaterial material;
+        bool readsPyramids;
+        double mixBsdf;
+    };
+    const std::vector<Expect> cases = {
+        {{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}, true, kWaveletBsdfShare},
+        {{"ggx r=0.2 (cap 0.36)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}}, false,
+         kWaveletBsdfShare},
+        {{"ggx r=0.5 (whole sphere)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}}, false,
+         kWaveletBsdfShare},
+        {{"blinn r=0.2 (cap 0.24)", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.2f}}, false,
+         kGpuNarrowLobeMixBsdf},
+        {{"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}}, false,
+         kWaveletBsdfShare},
+    };
+    std::vector<SamplerMaterial> materials;
+    SceneSamplerTables scene;
+    for (const Expect& c : cases) {
+        scene.samplerIndexOfMaterial.push_back(int(materials.size()));
+        materials.push_back(c.material);
+    }
+    scene.tables = DirectionSamplerTables::build(env, materials, SamplerKind::Wavelet);
+    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, cases.size());
+    ASSERT_TRUE(packed.ok()) << packed.error().message();
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const GpuSamplerMaterial& g = packed->materials[i];
+        SCOPED_TRACE(cases[i].material.name);
+        ASSERT_EQ(g.mode, kGpuSamplerProduct);
+        EXPECT_EQ(g.precomputedBins > 0, cases[i].readsPyramids);
+        EXPECT_FLOAT_EQ(g.mixBsdf, float(cases[i].mixBsdf));
+    }
+}
+
+} // namespace
+} // namespace wavelit::render
