@@ -68,6 +68,7 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
     for (double m : rowMass)
         total += m;
     s.m_lit = total > 0.0 && std::isfinite(total);
+    s.m_integral = s.m_lit ? total : 0.0;
     s.m_marginal.resize(size_t(h) + 1);
     buildCdf(rowMass.data(), h, s.m_marginal.data());
     return s;

@@ -27,6 +27,8 @@ public:
     static EquirectEnvSampler build(const scene::Environment& env);
 
     bool hasLight() const { return m_lit; }
+    // The luminance integral over the sphere, sum of luminance x solid angle (envNeeShare).
+    double integral() const { return m_integral; }
     int width() const { return m_width; }
     int height() const { return m_height; }
     // marginal: height + 1 entries, 0 ... 1; rowSolidAngle: one texel's per row;
@@ -46,6 +48,7 @@ public:
 private:
     int m_width = 0, m_height = 0;
     bool m_lit = false;
+    double m_integral = 0.0;
     std::vector<double> m_marginal, m_rowOmega, m_conditional;
 };
 
