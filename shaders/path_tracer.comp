@@ -210,12 +210,15 @@ void main() {
         // Analytic lights crossed before the surface (or the sun, when the ray escapes).
         if (lightCount > 0u)
             L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
-                                         lightCount, selection * lightsShareOfDir, beta, pixelIndex);
+                                         lightCount, selection * lightsShareOfDir, beta,
+                                         pixelIndex);
         if (!found) {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             if (neeOfDir)
-                w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, envShareOfDir * dsPdf(ds, dir));
+                w = kind == kSamplerEnv
+                        ? 0.0
+                        : powerHeuristic(scatterPdfOfDir, envShareOfDir * dsPdf(ds, dir));
 #endif
             vec3 escaped = beta * (w * envRadiance(dir));
             L += escaped;
@@ -290,9 +293,9 @@ void main() {
             }
             if (toLights) {
                 vec3 direct = beta * nextEvent(brdfType, mat.baseColorRoughness.rgb,
-                                               mat.baseColorRoughness.a, frame, wo, ng, next, uSelect,
-                                               ul.x, ul.y, lightCount, selection * lightsShare,
-                                               triangleCount
+                                               mat.baseColorRoughness.a, frame, wo, ng, next,
+                                               uSelect, ul.x, ul.y, lightCount,
+                                               selection * lightsShare, triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
                                                , ds, continuationFromSampler
 #endif

@@ -196,7 +196,8 @@ LightSample LightSampler::sampleSun(float u1, float u2) const {
 }
 
 float LightSampler::irradianceGuess(const glm::vec3& p, const glm::vec3& n) const {
-    const float lum = 0.2126f * m_c.emission.r + 0.7152f * m_c.emission.g + 0.0722f * m_c.emission.b;
+    const glm::vec3& e = m_c.emission;
+    const float lum = 0.2126f * e.r + 0.7152f * e.g + 0.0722f * e.b;
     if (m_c.type == scene::LightType::Sun) {
         const float cosR = std::max(-glm::dot(m_c.normal, n), 0.0f);
         return lum * (m_c.delta ? cosR : 2.0f * util::kPi * m_c.oneMinusCosSun * cosR);

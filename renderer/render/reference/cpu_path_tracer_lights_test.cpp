@@ -362,7 +362,8 @@ TEST(CpuPathTracerLights, MisOneNeeRayForEnvAndLightsAgreesWithBsdf) {
     const double sigma = std::hypot(m[0].standardError, m[1].standardError);
     EXPECT_NEAR(m[1].mean, m[0].mean, kStrategySigmas * sigma);
     EXPECT_GT(m[0].mean, 0.0);
-    std::printf("[ one NEE ray ] bsdf %.4f±%.4f mis %.4f±%.4f (|z| %.2f); variance mis/bsdf %.2f\n",
+    std::printf("[ one NEE ray ] bsdf %.4f±%.4f mis %.4f±%.4f (|z| %.2f); "
+                "variance mis/bsdf %.2f\n",
                 m[0].mean, m[0].standardError, m[1].mean, m[1].standardError,
                 std::abs(m[1].mean - m[0].mean) / sigma, m[1].pixelVariance / m[0].pixelVariance);
 }

@@ -167,7 +167,8 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
                                                      lightsShare)
                                          : glm::vec3(0.0f);
             L += beta * e;
-            if (groups && toLights) splat(m_groups.groupOfLight[m_lights.select(uSelect)], beta * e);
+            if (groups && toLights)
+                splat(m_groups.groupOfLight[m_lights.select(uSelect)], beta * e);
             addEvent(depth, "light-nee", lightEvent.technique, lightEvent.pdf,
                      std::move(lightEvent.misPdfs), lightEvent.weight, lightEvent.fcos,
                      lightEvent.radiance, beta, beta * e);

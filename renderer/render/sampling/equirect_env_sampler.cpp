@@ -48,7 +48,8 @@ void buildAlias(const double* w, int n, AliasSlot* slots) {
     // Rounding leftovers hold ~1 of a slot each; a weightless one keeps none.
     for (const std::vector<int>* rest : {&large, &small})
         for (int i : *rest)
-            slots[i] = w[i] > 0.0 ? AliasSlot{1.0f, uint32_t(i)} : AliasSlot{0.0f, uint32_t(heaviest)};
+            slots[i] = w[i] > 0.0 ? AliasSlot{1.0f, uint32_t(i)}
+                                  : AliasSlot{0.0f, uint32_t(heaviest)};
 }
 
 // The entry of slots[0..n) that u draws (the slot by u n, then the slot's coin by the remainder);
