@@ -333,14 +333,17 @@ TEST(CpuPathTracerLights, MisOneNeeRayForEnvAndLightsAgreesWithBsdf) {
     ggx.baseColor = glm::vec3(0.9f);
     auto s = makePlaneScene(ggx);
     s->camera.position = glm::vec3(0.0f, 1.0f, 2.0f);
-    auto image = std::make_shared<util::ImageRGB>(16, 8, glm::vec3(0.2f, 0.3f, 0.5f));
-    image->at(7, 2) = glm::vec3(400.0f); // a sun above the horizon, behind the camera's view
+    // An env that matters as much as the lights: a bright sky, a dim ground, a one-texel sun.
+    auto image = std::make_shared<util::ImageRGB>(16, 8, glm::vec3(0.05f));
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 16; ++x) image->at(x, y) = glm::vec3(2.0f, 2.5f, 3.0f);
+    image->at(7, 2) = glm::vec3(400.0f);
     s->lighting.environment.image = image;
     s->lighting.environment.intensity = 1.0f;
     scene::Light sphere;
     sphere.type = scene::LightType::Sphere;
     sphere.position = glm::vec3(0.0f, 1.0f, -2.0f);
-    sphere.intensity = 100.0f;
+    sphere.intensity = 30.0f;
     sphere.radius = 0.3f;
     s->lighting.lights.push_back(sphere);
     scene::Light rect = sphere;
