@@ -1,10 +1,11 @@
 // The `env` technique with the radiance's own pdf (render/sampling/equirect_env_sampler.h is the
-// CPU twin): an equirect texel by a marginal CDF over rows and a conditional CDF in its row,
-// then a point uniform in solid angle inside it; the pdf is the texel's probability over its
-// solid angle, read at the texel the radiance lookup reads (common/equirect.glsl).
-// The tables sit in samplerWords at `offset` (gpu_sampler_data.h): width, height, then doubles as
-// two words each (low, high): the marginal CDF (height + 1), each row's texel solid angle
-// (height), the rows' conditional CDFs (height x (width + 1)).
+// CPU twin): an equirect texel by an alias table over the rows and its row's alias table over the
+// columns (O(1): no search), then a point uniform in solid angle inside it; the pdf is the texel's
+// tabulated solid-angle pdf, read at the texel the radiance lookup reads (common/equirect.glsl).
+// The tables sit in samplerWords at `offset` (gpu_sampler_data.h): width, height, then each row's
+// texel solid angle (height doubles, two words each: low, high), the row alias table (height
+// slots) and the rows' column alias tables (height x width slots), two words a slot (threshold
+// float bits, alias), then the texels' pdfs (height x width doubles, row-major).
 #ifndef WAVELIT_ENV_EXACT_GLSL
 #define WAVELIT_ENV_EXACT_GLSL
 
@@ -15,27 +16,26 @@ double envExactWord(uint i) { return packDouble2x32(uvec2(samplerWords[i], sampl
 
 uvec2 envExactSize(uint offset) { return uvec2(samplerWords[offset], samplerWords[offset + 1u]); }
 
-// Interval i of the CDF at word `base` (n + 1 doubles) with cdf[i] <= u < cdf[i + 1], never an
-// empty one (std::upper_bound - 1 on the CPU); u rescaled into the interval.
+// The entry of the n slots at word `base` that u draws: the slot by u n, its coin by the
+// remainder (keep the slot's entry below its threshold, else take its alias); u rescaled into
+// [0, 1) within what was chosen. The CPU's pick(), in the same double operations.
 uint envExactPick(uint base, uint n, inout double u) {
-    uint lo = 0u, hi = n - 1u;
-    while (lo < hi) {
-        uint mid = (lo + hi + 1u) >> 1;
-        if (envExactWord(base + 2u * mid) <= u) lo = mid;
-        else hi = mid - 1u;
+    double s = u * double(n);
+    uint i = min(uint(s), n - 1u);
+    double f = s - double(i);
+    double q = double(uintBitsToFloat(samplerWords[base + 2u * i]));
+    if (f < q) {
+        u = min(f / q, kBelowOneD);
+        return i;
     }
-    double c0 = envExactWord(base + 2u * lo), width = envExactWord(base + 2u * lo + 2u) - c0;
-    u = width > 0.0LF ? min((u - c0) / width, kBelowOneD) : 0.5LF;
-    return lo;
+    u = min((f - q) / (1.0LF - q), kBelowOneD);
+    return samplerWords[base + 2u * i + 1u];
 }
 
 double envExactTexelPdf(uint offset, uvec2 t) {
     uvec2 size = envExactSize(offset);
-    uint marginal = offset + 2u, omega = marginal + 2u * (size.y + 1u);
-    uint row = omega + 2u * size.y + 2u * t.y * (size.x + 1u);
-    double p = (envExactWord(marginal + 2u * t.y + 2u) - envExactWord(marginal + 2u * t.y)) *
-               (envExactWord(row + 2u * t.x + 2u) - envExactWord(row + 2u * t.x));
-    return p / envExactWord(omega + 2u * t.y);
+    uint pdfs = offset + 2u + 2u * size.y + 2u * size.y + 2u * size.y * size.x;
+    return envExactWord(pdfs + 2u * (t.y * size.x + t.x));
 }
 
 // Solid-angle pdf at world direction wi.
@@ -46,9 +46,9 @@ double envExactPdf(uint offset, vec3 wi, vec2 cosSinYaw) {
 // An env-local direction.
 vec3 envExactSample(uint offset, dvec2 u) {
     uvec2 size = envExactSize(offset);
-    uint marginal = offset + 2u, omega = marginal + 2u * (size.y + 1u);
-    uint y = envExactPick(marginal, size.y, u.y);
-    uint x = envExactPick(omega + 2u * size.y + 2u * y * (size.x + 1u), size.x, u.x);
+    uint omega = offset + 2u, rows = omega + 2u * size.y, columns = rows + 2u * size.y;
+    uint y = envExactPick(rows, size.y, u.y);
+    uint x = envExactPick(columns + 2u * y * size.x, size.x, u.x);
     float c0 = cos(kPi * float(y) / float(size.y));
     double drop = envExactWord(omega + 2u * y) * double(size.x) / double(2.0 * kPi);
     float cosTheta = clamp(float(double(c0) - drop * u.y), -1.0, 1.0);

@@ -56,6 +56,7 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         const SamplerEnvironment& env = t.environment();
         d.lit = env.hasLight();
         d.envMean = float(env.cellAverage(0, 0, 0));
+        d.envIntegral = float(env.exact().integral());
         d.envLevel = uint32_t(env.level());
         if (d.lit)
             d.envNodes = env.fine().table();
@@ -118,13 +119,23 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         const EquirectEnvSampler& exact = env.exact();
         d.words.push_back(uint32_t(exact.width()));
         d.words.push_back(uint32_t(exact.height()));
-        for (const std::vector<double>* v :
-             {&exact.marginal(), &exact.rowSolidAngle(), &exact.conditional()})
-            for (double x : *v) {
+        auto pushDoubles = [&](const std::vector<double>& v) {
+            for (double x : v) {
                 const uint64_t bits = std::bit_cast<uint64_t>(x);
                 d.words.push_back(uint32_t(bits));
                 d.words.push_back(uint32_t(bits >> 32));
             }
+        };
+        auto pushSlots = [&](const std::vector<EquirectEnvSampler::AliasSlot>& v) {
+            for (const EquirectEnvSampler::AliasSlot& s : v) {
+                d.words.push_back(std::bit_cast<uint32_t>(s.threshold));
+                d.words.push_back(s.alias);
+            }
+        };
+        pushDoubles(exact.rowSolidAngle());
+        pushSlots(exact.rowAlias());
+        pushSlots(exact.columnAlias());
+        pushDoubles(exact.pdfTable());
     }
     if (d.words.empty())
         d.words.push_back(0);

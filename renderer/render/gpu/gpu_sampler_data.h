@@ -6,9 +6,10 @@
 //              node words, scaling floats, each at its own offset), then the env's cell averages
 //              at level kTailLevel (sampler_constants.h) as float bits at tailOffset (the
 //              mixture's tail estimate), then the exact env technique's tables at
-//              tailOffset + 4^kTailLevel (EquirectEnvSampler: width, height, its marginal CDF,
-//              row solid angles and conditional CDFs, doubles as two words, low first;
-//              sampling/env_exact.glsl)
+//              tailOffset + 4^kTailLevel (EquirectEnvSampler: width, height, its row solid
+//              angles (doubles as two words, low first), row alias table and the rows' column
+//              alias tables (two words a slot: threshold float bits, alias), texel pdfs
+//              (doubles); sampling/env_exact.glsl)
 //              A `wavelet` material in product mode also has its axis bins' precomputed product
 //              pyramids there (precomputed_products.h), after its flat tables.
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).
@@ -75,6 +76,7 @@ struct GpuSamplerData {
     uint32_t kind = 0; // SamplerKind as its integer code
     bool lit = false;
     float envMean = 0.0f;
+    float envIntegral = 0.0f; // EquirectEnvSampler::integral (envNeeShare, light_set.h)
     uint32_t tailOffset = 0;
     uint32_t envLevel = 0; // the env map's level N
     std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty

@@ -12,26 +12,59 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kBelowOne = 0x1.fffffffffffffp-1;
 
-// Normalises weights w[0..n) into a CDF of n + 1 entries (0 ... 1); all zero: uniform.
-void buildCdf(const double* w, int n, double* cdf) {
+using AliasSlot = EquirectEnvSampler::AliasSlot;
+
+// Vose's alias table over weights w[0..n) (all zero: uniform). Entries with weight 0 are never
+// drawn: their slots' thresholds are 0, and no slot aliases them (only "large" entries, at or
+// above the mean, take aliases).
+void buildAlias(const double* w, int n, AliasSlot* slots) {
     double sum = 0.0;
-    for (int i = 0; i < n; ++i)
-        sum += w[i];
-    cdf[0] = 0.0;
-    double run = 0.0;
+    int heaviest = 0;
     for (int i = 0; i < n; ++i) {
-        run += sum > 0.0 ? w[i] : 1.0;
-        cdf[i + 1] = run / (sum > 0.0 ? sum : double(n));
+        sum += w[i];
+        if (w[i] > w[heaviest]) heaviest = i;
     }
-    cdf[n] = 1.0;
+    if (!(sum > 0.0)) {
+        for (int i = 0; i < n; ++i)
+            slots[i] = {1.0f, uint32_t(i)};
+        return;
+    }
+    std::vector<double> scaled(static_cast<size_t>(n));
+    std::vector<int> small, large;
+    for (int i = 0; i < n; ++i) {
+        scaled[size_t(i)] = w[i] * n / sum;
+        (scaled[size_t(i)] < 1.0 ? small : large).push_back(i);
+    }
+    while (!small.empty() && !large.empty()) {
+        const int s = small.back(), l = large.back();
+        small.pop_back();
+        slots[s] = {float(scaled[size_t(s)]), uint32_t(l)};
+        scaled[size_t(l)] = (scaled[size_t(l)] + scaled[size_t(s)]) - 1.0;
+        if (scaled[size_t(l)] < 1.0) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    // Rounding leftovers hold ~1 of a slot each; a weightless one keeps none.
+    for (const std::vector<int>* rest : {&large, &small})
+        for (int i : *rest)
+            slots[i] = w[i] > 0.0 ? AliasSlot{1.0f, uint32_t(i)}
+                                  : AliasSlot{0.0f, uint32_t(heaviest)};
 }
 
-// The interval i of cdf[0..n] with cdf[i] <= u < cdf[i + 1] (never an empty one); u rescaled.
-int pick(const double* cdf, int n, double& u) {
-    const int i = std::clamp(int(std::upper_bound(cdf, cdf + n + 1, u) - cdf) - 1, 0, n - 1);
-    const double width = cdf[i + 1] - cdf[i];
-    u = width > 0.0 ? std::min((u - cdf[i]) / width, kBelowOne) : 0.5;
-    return i;
+// The entry of slots[0..n) that u draws (the slot by u n, then the slot's coin by the remainder);
+// u rescaled into [0, 1) within what was chosen. Double, as env_exact.glsl envExactPick.
+int pick(const AliasSlot* slots, int n, double& u) {
+    const double s = u * double(n);
+    const int i = std::min(int(s), n - 1);
+    const double f = s - double(i);
+    const double q = double(slots[i].threshold);
+    if (f < q) {
+        u = std::min(f / q, kBelowOne);
+        return i;
+    }
+    u = std::min((f - q) / (1.0 - q), kBelowOne);
+    return int(slots[i].alias);
 }
 
 // 2 pi / w x (cos theta_y - cos theta_{y+1}), as a product of sines: no cancellation at the poles.
@@ -48,8 +81,8 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
     s.m_height = image ? env.image->height : 1;
     const int w = s.m_width, h = s.m_height;
     const glm::vec3 scale = env.intensity * env.tint;
-    std::vector<double> weights(static_cast<size_t>(w)), rowMass(static_cast<size_t>(h));
-    s.m_conditional.resize(size_t(h) * size_t(w + 1));
+    std::vector<double> weights(size_t(w) * size_t(h)), rowMass(static_cast<size_t>(h));
+    s.m_columnAlias.resize(size_t(h) * size_t(w));
     s.m_rowOmega.resize(size_t(h));
     for (int y = 0; y < h; ++y) {
         const double omega = texelRowSolidAngle(y, w, h);
@@ -58,32 +91,41 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
         for (int x = 0; x < w; ++x) {
             const glm::vec3 c = glm::max((image ? env.image->at(x, y) : glm::vec3(1.0f)) * scale,
                                          glm::vec3(0.0f));
-            weights[size_t(x)] = double(util::luminance(c)) * omega;
-            mass += weights[size_t(x)];
+            weights[size_t(y) * size_t(w) + size_t(x)] = double(util::luminance(c)) * omega;
+            mass += weights[size_t(y) * size_t(w) + size_t(x)];
         }
         rowMass[size_t(y)] = mass;
-        buildCdf(weights.data(), w, &s.m_conditional[size_t(y) * size_t(w + 1)]);
+        buildAlias(&weights[size_t(y) * size_t(w)], w, &s.m_columnAlias[size_t(y) * size_t(w)]);
     }
     double total = 0.0;
     for (double m : rowMass)
         total += m;
     s.m_lit = total > 0.0 && std::isfinite(total);
-    s.m_marginal.resize(size_t(h) + 1);
-    buildCdf(rowMass.data(), h, s.m_marginal.data());
+    s.m_integral = s.m_lit ? total : 0.0;
+    s.m_rowAlias.resize(size_t(h));
+    buildAlias(rowMass.data(), h, s.m_rowAlias.data());
+    s.m_pdf.assign(weights.size(), 0.0);
+    if (s.m_lit)
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const size_t i = size_t(y) * size_t(w) + size_t(x);
+                s.m_pdf[i] = weights[i] / total / s.m_rowOmega[size_t(y)];
+            }
     return s;
 }
 
 double EquirectEnvSampler::texelPdf(int x, int y) const {
-    if (!m_lit)
-        return 0.0;
-    const double* row = &m_conditional[size_t(y) * size_t(m_width + 1)];
-    const double p = (m_marginal[size_t(y) + 1] - m_marginal[size_t(y)]) * (row[x + 1] - row[x]);
-    return p / m_rowOmega[size_t(y)];
+    return m_pdf[size_t(y) * size_t(m_width) + size_t(x)];
+}
+
+size_t EquirectEnvSampler::bytes() const {
+    return (m_rowAlias.size() + m_columnAlias.size()) * sizeof(AliasSlot) +
+           (m_rowOmega.size() + m_pdf.size()) * sizeof(double);
 }
 
 glm::dvec3 EquirectEnvSampler::sampleLocal(glm::dvec2 u, double& pdf) const {
-    const int y = pick(m_marginal.data(), m_height, u.y);
-    const int x = pick(&m_conditional[size_t(y) * size_t(m_width + 1)], m_width, u.x);
+    const int y = pick(m_rowAlias.data(), m_height, u.y);
+    const int x = pick(&m_columnAlias[size_t(y) * size_t(m_width)], m_width, u.x);
     // cos theta falls linearly across the row by omega w / (2 pi) (uniform in solid angle).
     const double c0 = std::cos(kPi * y / m_height);
     const double cosTheta =

@@ -176,8 +176,7 @@ size_t SamplerEnvironment::bytes() const {
     size_t b = m_fine ? m_fine->table().size() * sizeof(wavelet::HierarchicalSampler::TableNode) : 0;
     for (const auto& g : m_mips)
         b += g.values.size() * sizeof(double);
-    b += (m_exact.marginal().size() + m_exact.rowSolidAngle().size() +
-          m_exact.conditional().size()) * sizeof(double);
+    b += m_exact.bytes();
     return b;
 }
 
