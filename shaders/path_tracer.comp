@@ -32,7 +32,7 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
     vec4 lightInfo;    // x = light selection probability 1/n (computed on the CPU, as LightSet)
     uvec4 samplerInfo; // sampler kind code, env lit (0/1), word offset of the 8^2 env averages,
                        // env map level N
-    vec4 samplerEnv;   // x = the sampler env map's mean luminance, y = its luminance integral
+    vec4 samplerEnv;   // x = the sampler env map's mean luminance
 } params;
 
 layout(push_constant) uniform Pass {
@@ -149,11 +149,10 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
 // mis), shadow ray, MIS against the BSDF continuation (env: weight 1).
 vec3 envNextEvent(DirSampler ds, uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
                   vec3 ng, vec3 o, float u1, float u2, float u3, bool envAlone,
-                  uint triangleCount, float envShare) {
+                  uint triangleCount) {
     vec3 wiWorld;
     float pdf;
     if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) return vec3(0.0);
-    pdf *= envShare; // the one-NEE-ray choice (envNeeShare; 1 where the env has its own ray)
     if (dot(wiWorld, ng) <= 0.0) return vec3(0.0);
     vec3 wi = frameToLocal(frame, wiWorld);
     if (wi.z <= 0.0) return vec3(0.0);
@@ -200,9 +199,6 @@ void main() {
     bool neeOfDir = false;
     DirSampler ds;
 #endif
-    // The probabilities with which the vertex that drew `dir` sent its NEE to the env and to the
-    // lights (envNeeShare: `mis` traces one NEE shadow ray per vertex for both; else 1 and 1).
-    float envShareOfDir = 1.0, lightsShareOfDir = 1.0;
     for (uint depth = 0u;; ++depth) {
         uint tri;
         float t, b1, b2;
@@ -210,15 +206,12 @@ void main() {
         // Analytic lights crossed before the surface (or the sun, when the ray escapes).
         if (lightCount > 0u)
             L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
-                                         lightCount, selection * lightsShareOfDir, beta,
-                                         pixelIndex);
+                                         lightCount, selection, beta, pixelIndex);
         if (!found) {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             if (neeOfDir)
-                w = kind == kSamplerEnv
-                        ? 0.0
-                        : powerHeuristic(scatterPdfOfDir, envShareOfDir * dsPdf(ds, dir));
+                w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, dsPdf(ds, dir));
 #endif
             vec3 escaped = beta * (w * envRadiance(dir));
             L += escaped;
@@ -268,54 +261,31 @@ void main() {
             ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
                          mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
 #endif
-        // `mis`: one NEE shadow ray per vertex, to the env with probability envShare, else to one
-        // light; uSelect makes the choice (CpuPathTracer::samplePixel).
-        bool oneNeeRay = false;
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        oneNeeRay = kind == kSamplerMis && vertexNee && lightCount > 0u;
-#endif
-        float envShare = 1.0;
-        if (oneNeeRay) {
-            float guess = 0.0;
-            for (uint k = 0u; k < lightCount; ++k)
-                guess += lightIrradianceGuess(analyticLights[k], next, frame.n);
-            envShare = envNeeShare(params.samplerEnv.y, guess);
-        }
-        float lightsShare = oneNeeRay ? 1.0 - envShare : 1.0;
-        bool toEnv = true, toLights = true; // the NEE this vertex does
         if (lightCount > 0u) {
             float uSelect = psNext1D(rng);
             vec2 ul = psNext2D(rng);
-            if (oneNeeRay) {
-                toEnv = uSelect < envShare;
-                toLights = !toEnv;
-                uSelect = (uSelect - envShare) / lightsShare; // nextEvent clamps the index
-            }
-            if (toLights) {
-                vec3 direct = beta * nextEvent(brdfType, mat.baseColorRoughness.rgb,
-                                               mat.baseColorRoughness.a, frame, wo, ng, next,
-                                               uSelect, ul.x, ul.y, lightCount,
-                                               selection * lightsShare, triangleCount
+            vec3 direct = beta * nextEvent(brdfType, mat.baseColorRoughness.rgb,
+                                           mat.baseColorRoughness.a, frame, wo, ng, next, uSelect,
+                                           ul.x, ul.y, lightCount, selection, triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-                                               , ds, continuationFromSampler
+                                           , ds, continuationFromSampler
 #endif
-                );
-                L += direct;
+            );
+            L += direct;
 #ifdef WAVELIT_LIGHT_GROUPS
-                splatGroup(groupOfLight[min(uint(uSelect * float(lightCount)), lightCount - 1u)],
-                           pixelIndex, direct);
+            splatGroup(groupOfLight[min(uint(uSelect * float(lightCount)), lightCount - 1u)],
+                       pixelIndex, direct);
 #endif
-            }
         }
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         if (envNee) {
             vec2 ue = psNext2D(rng);
             float ue3 = psNext1D(rng);
-            if (vertexNee && toEnv) {
+            if (vertexNee) {
                 vec3 envDirect = beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
                                                      mat.baseColorRoughness.a, frame, wo, ng, next,
                                                      ue.x, ue.y, ue3, kind == kSamplerEnv,
-                                                     triangleCount, envShare);
+                                                     triangleCount);
                 L += envDirect;
 #ifdef WAVELIT_LIGHT_GROUPS
                 splatGroup(environmentGroup, pixelIndex, envDirect);
@@ -355,8 +325,6 @@ void main() {
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         neeOfDir = vertexNee;
 #endif
-        envShareOfDir = envShare;
-        lightsShareOfDir = lightsShare;
 
         if (int(depth) >= kRussianRouletteDepth) {
             float q = max(kMinContinueProbability, 1.0 - max(beta.r, max(beta.g, beta.b)));

@@ -273,40 +273,6 @@ bool lightEvalHit(Light l, vec3 origin, vec3 dir, float tMax, bool escaped, out 
     return false;
 }
 
-// LightSampler::irradianceGuess: a cheap luminance guess of what the light gives point p with
-// normal n, unoccluded; only for envNeeShare. Same float operations as the CPU's.
-float lightIrradianceGuess(Light l, vec3 p, vec3 n) {
-    vec3 e = l.emissionArea.rgb;
-    float lum = 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b;
-    uint type = lightType(l);
-    if (type == kLightSun) {
-        float cosR = max(-dot(l.normalRadius.xyz, n), 0.0);
-        return lum * (lightIsDelta(l) ? cosR : 2.0 * kPi * l.sun.y * cosR);
-    }
-    vec3 toLight = l.positionType.xyz - p;
-    float d2 = max(dot(toLight, toLight), 1e-12);
-    float d = sqrt(d2);
-    float cosR = max(dot(toLight, n), 0.0) / d;
-    if (type == kLightSphere) {
-        float r = l.normalRadius.w;
-        return lum * min(kPi * r * r / d2, 2.0 * kPi) * cosR;
-    }
-    if (type == kLightRect) {
-        float cosL = max(-dot(toLight, l.normalRadius.xyz), 0.0) / d;
-        return lum * min(l.emissionArea.w * cosL / d2, 2.0 * kPi) * cosR;
-    }
-    return lum * cosR / d2;
-}
-
-// envNeeShare (render/lights/light_set.h): the probability that a `mis` vertex's one NEE shadow
-// ray goes to the environment (integral: its luminance over the sphere) rather than to a light.
-float envNeeShare(float envIntegral, float lightsGuess) {
-    float envGuess = 0.25 * envIntegral;
-    float s = envGuess / (envGuess + lightsGuess);
-    if (!(s >= 0.0 && s <= 1.0)) return 0.5;
-    return clamp(s, 0.1, 0.9);
-}
-
 // LightSampler::pdf: solid-angle density of lightSample at wi from p; 0 for delta lights.
 float lightPdf(Light l, vec3 p, vec3 wi) {
     if (lightIsDelta(l)) return 0.0;

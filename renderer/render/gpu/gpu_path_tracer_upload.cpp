@@ -97,7 +97,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     SceneSamplerTables samplerTables;
     bool uploadSamplers = false;
     uint32_t samplerInfo[4] = {m_samplerInfo[0], m_samplerInfo[1], m_samplerInfo[2], m_samplerInfo[3]};
-    float samplerEnvMean = m_samplerEnvMean, samplerEnvIntegral = m_samplerEnvIntegral;
+    float samplerEnvMean = m_samplerEnvMean;
     const SamplerTablesRebuilds rebuildsBefore = m_tablesCache.rebuilds();
     if (usesDirectionSamplers()) {
         auto tables = m_tablesCache.update(scene, m_options.sampler, changed);
@@ -120,11 +120,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
             samplerInfo[2] = samplers.tailOffset;
             samplerInfo[3] = samplers.envLevel;
             samplerEnvMean = samplers.envMean;
-            samplerEnvIntegral = samplers.envIntegral;
         }
         std::copy(std::begin(samplerInfo), std::end(samplerInfo), d.params.samplerInfo);
         d.params.samplerEnv[0] = samplerEnvMean;
-        d.params.samplerEnv[1] = samplerEnvIntegral;
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     struct Upload {
@@ -211,7 +209,6 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     m_samplerTables = std::move(samplerTables);
     std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
     m_samplerEnvMean = samplerEnvMean;
-    m_samplerEnvIntegral = samplerEnvIntegral;
 
     UpdateCounts& c = m_lastUpdate;
     c = UpdateCounts{};

@@ -56,7 +56,6 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         const SamplerEnvironment& env = t.environment();
         d.lit = env.hasLight();
         d.envMean = float(env.cellAverage(0, 0, 0));
-        d.envIntegral = float(env.exact().integral());
         d.envLevel = uint32_t(env.level());
         if (d.lit)
             d.envNodes = env.fine().table();

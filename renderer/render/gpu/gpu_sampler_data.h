@@ -76,7 +76,6 @@ struct GpuSamplerData {
     uint32_t kind = 0; // SamplerKind as its integer code
     bool lit = false;
     float envMean = 0.0f;
-    float envIntegral = 0.0f; // EquirectEnvSampler::integral (envNeeShare, light_set.h)
     uint32_t tailOffset = 0;
     uint32_t envLevel = 0; // the env map's level N
     std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty

@@ -195,27 +195,6 @@ LightSample LightSampler::sampleSun(float u1, float u2) const {
     return s;
 }
 
-float LightSampler::irradianceGuess(const glm::vec3& p, const glm::vec3& n) const {
-    const glm::vec3& e = m_c.emission;
-    const float lum = 0.2126f * e.r + 0.7152f * e.g + 0.0722f * e.b;
-    if (m_c.type == scene::LightType::Sun) {
-        const float cosR = std::max(-glm::dot(m_c.normal, n), 0.0f);
-        return lum * (m_c.delta ? cosR : 2.0f * util::kPi * m_c.oneMinusCosSun * cosR);
-    }
-    const glm::vec3 toLight = m_c.position - p;
-    const float d2 = std::max(glm::dot(toLight, toLight), 1e-12f);
-    const float d = std::sqrt(d2);
-    const float cosR = std::max(glm::dot(toLight, n), 0.0f) / d;
-    // Area lights: emission x (solid angle, at most a hemisphere's) x cos at the receiver.
-    if (m_c.type == scene::LightType::Sphere)
-        return lum * std::min(util::kPi * m_c.radius * m_c.radius / d2, 2.0f * util::kPi) * cosR;
-    if (m_c.type == scene::LightType::Rect) {
-        const float cosL = std::max(-glm::dot(toLight, m_c.normal), 0.0f) / d;
-        return lum * std::min(m_c.area * cosL / d2, 2.0f * util::kPi) * cosR;
-    }
-    return lum * cosR / d2; // point, spot (I / d^2; the spot's cone is left out)
-}
-
 float LightSampler::spotFalloff(const glm::vec3& fromLight) const {
     const float cosAlpha = glm::dot(fromLight, m_c.normal);
     if (!(m_c.cosInner > m_c.cosOuter)) return cosAlpha >= m_c.cosOuter ? 1.0f : 0.0f;

@@ -89,12 +89,6 @@ public:
     std::optional<LightHit> evalHit(const glm::vec3& origin, const glm::vec3& dir,
                                     float tMax = std::numeric_limits<float>::infinity()) const;
 
-    // A cheap guess, in luminance, of the irradiance the light gives point p with normal n,
-    // unoccluded: only to choose between next-event techniques (envNeeShare, light_set.h). It
-    // need not be exact (the estimator divides by the probability it yields), only cheap and
-    // the same on both tracers (lights.glsl lightIrradianceGuess: same float operations).
-    float irradianceGuess(const glm::vec3& p, const glm::vec3& n) const;
-
     bool isDelta() const { return m_c.delta; }
     scene::LightType type() const { return m_c.type; }
     // Emitted radiance of area lights; I = Φ/(4π) for point/spot; E for a delta sun.

@@ -10,19 +10,6 @@ float powerHeuristic(float a, float b) {
     return 1.0f / (1.0f + r * r);
 }
 
-float envNeeShare(float envIntegral, float lightsGuess) {
-    const float envGuess = 0.25f * envIntegral;
-    const float s = envGuess / (envGuess + lightsGuess);
-    if (!(s >= 0.0f && s <= 1.0f)) return 0.5f; // 0 / 0
-    return std::clamp(s, 0.1f, 0.9f);
-}
-
-float LightSet::irradianceGuess(const glm::vec3& p, const glm::vec3& n) const {
-    float sum = 0.0f;
-    for (const LightSampler& l : m_lights) sum += l.irradianceGuess(p, n);
-    return sum;
-}
-
 LightSet::LightSet(const std::vector<scene::Light>& lights) {
     m_lights.reserve(lights.size());
     for (const scene::Light& l : lights) m_lights.emplace_back(l);
@@ -34,10 +21,10 @@ size_t LightSet::select(float u) const {
 }
 
 float LightSet::lightWeight(const LightSampler& light, float lightPdf, float bsdfPdf,
-                            LightStrategy strategy, float lightsShare) const {
+                            LightStrategy strategy) const {
     if (light.isDelta()) return 1.0f;
     switch (strategy) {
-    case LightStrategy::Mis: return powerHeuristic(lightsShare * m_selection * lightPdf, bsdfPdf);
+    case LightStrategy::Mis: return powerHeuristic(m_selection * lightPdf, bsdfPdf);
     case LightStrategy::LightOnly: return 1.0f;
     case LightStrategy::BsdfOnly: return 0.0f;
     }
@@ -46,7 +33,7 @@ float LightSet::lightWeight(const LightSampler& light, float lightPdf, float bsd
 
 glm::vec3 LightSet::emissionAlongRay(const glm::vec3& origin, const glm::vec3& dir, float tMax,
                                      float bsdfPdf, bool cameraRay, LightStrategy strategy,
-                                     glm::vec3* perLight, float lightsShare) const {
+                                     glm::vec3* perLight) const {
     glm::vec3 sum(0.0f);
     for (size_t k = 0; k < m_lights.size(); ++k) {
         const LightSampler& light = m_lights[k];
@@ -57,7 +44,7 @@ glm::vec3 LightSet::emissionAlongRay(const glm::vec3& origin, const glm::vec3& d
         if (!cameraRay) {
             switch (strategy) {
             case LightStrategy::Mis:
-                w = powerHeuristic(bsdfPdf, lightsShare * m_selection * light.pdf(origin, dir));
+                w = powerHeuristic(bsdfPdf, m_selection * light.pdf(origin, dir));
                 break;
             case LightStrategy::LightOnly: w = 0.0f; break;
             case LightStrategy::BsdfOnly: w = 1.0f; break;

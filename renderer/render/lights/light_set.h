@@ -33,16 +33,6 @@ enum class LightStrategy { Mis, LightOnly, BsdfOnly };
 // (a 0.53° sun: 1/Ω ≈ 1.5e4 sr⁻¹; GGX r = 0.02: D ≈ 1e6) do not overflow when squared.
 float powerHeuristic(float a, float b);
 
-// One shadow ray per vertex for all next-event estimation (`mis`, issue 12): the probability
-// that a vertex's one NEE draw goes to the environment rather than to the analytic lights, from
-// guesses of what each gives the vertex: envGuess = E / 4 (E = the env's luminance integral over
-// the sphere, EquirectEnvSampler::integral: the irradiance a plane gets from a uniform env of the
-// same E), lightsGuess = Σ LightSampler::irradianceGuess. Kept in [0.1, 0.9] so neither technique
-// starves where a guess is poor (a rect light whose centre is below the horizon); 0.5 when the
-// guesses say nothing (both 0). The MIS weights of both techniques use this probability.
-// shaders/common/lights.glsl envNeeShare is the twin.
-float envNeeShare(float envIntegral, float lightsGuess);
-
 class LightSet {
 public:
     explicit LightSet(const std::vector<scene::Light>& lights);
@@ -54,25 +44,20 @@ public:
     // Uniform selection: index min(⌊u n⌋, n − 1), probability 1/n.
     size_t select(float u) const;
     float selectionProbability() const { return m_selection; }
-    // Σ over lights of irradianceGuess(p, n) (envNeeShare's lightsGuess).
-    float irradianceGuess(const glm::vec3& p, const glm::vec3& n) const;
 
     // MIS weight of a light-sampled direction with light pdf `lightPdf` (solid angle, before
-    // selection) and BSDF pdf `bsdfPdf`. lightsShare: the probability that the vertex's NEE went
-    // to the lights at all (1 - envNeeShare where one ray serves env and lights, else 1); the
-    // light strategy's pdf is lightsShare x 1/n x lightPdf.
+    // selection) and BSDF pdf `bsdfPdf`.
     float lightWeight(const LightSampler& light, float lightPdf, float bsdfPdf,
-                      LightStrategy strategy, float lightsShare = 1.0f) const;
+                      LightStrategy strategy) const;
 
     // Σ over lights crossed by origin + t·dir, t in (0, tMax) (tMax = infinity: the ray escaped,
     // so the sun counts) of weight × emitted radiance. bsdfPdf: the solid-angle pdf with which the
     // previous vertex sampled dir; cameraRay: no previous vertex, weight 1. perLight (size()
     // entries, or nullptr): each light's term of the sum, written for every light (0 if missed),
     // for the LightMix layers (light_groups.h).
-    // lightsShare: as lightWeight's, of the vertex that drew dir.
     glm::vec3 emissionAlongRay(const glm::vec3& origin, const glm::vec3& dir, float tMax,
                                float bsdfPdf, bool cameraRay, LightStrategy strategy,
-                               glm::vec3* perLight = nullptr, float lightsShare = 1.0f) const;
+                               glm::vec3* perLight = nullptr) const;
 
 private:
     std::vector<LightSampler> m_lights;

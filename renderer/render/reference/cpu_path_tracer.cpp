@@ -173,7 +173,7 @@ std::string CpuPathTracer::samplerReport() const {
 glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                                    const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng,
                                    const glm::vec3& origin, float uSelect, float u1,
-                                   float u2, PathEvent* record, float lightsShare) const {
+                                   float u2, PathEvent* record) const {
     const LightSampler& light = m_lights.light(m_lights.select(uSelect));
     if (m_lightStrategy == LightStrategy::BsdfOnly && !light.isDelta()) return glm::vec3(0.0f);
     const LightSample ls = light.sample(origin, u1, u2);
@@ -188,26 +188,24 @@ glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Fram
                         std::min(ls.distance, std::numeric_limits<float>::max())))
         return glm::vec3(0.0f);
     const float bsdfPdf = ls.delta ? 0.0f : scatterPdf(mat, frame, ds, wo, wi);
-    const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy, lightsShare);
-    const float selection = m_lights.selectionProbability() * lightsShare;
+    const float w = m_lights.lightWeight(light, ls.pdf, bsdfPdf, m_lightStrategy);
     if (record) {
         record->technique = "light " + std::to_string(m_lights.select(uSelect));
-        record->pdf = ls.pdf * selection;
+        record->pdf = ls.pdf * m_lights.selectionProbability();
         record->misPdfs = {{"light (x selection)", record->pdf}, {"continuation", bsdfPdf}};
         record->weight = w;
         record->fcos = f * wi.z;
         record->radiance = ls.value;
     }
-    return f * ls.value * (wi.z * w / (ls.pdf * selection));
+    return f * ls.value * (wi.z * w / (ls.pdf * m_lights.selectionProbability()));
 }
 
 glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                                       const DirectionSampler& nee, const glm::vec3& wo,
                                       const glm::vec3& ng, const glm::vec3& origin, float u1,
                                       float u2, float u3, std::vector<PathEvent>* events,
-                                      int vertex, const glm::vec3& beta, float envShare) const {
-    DirectionSample d = nee.sample(u1, u2, u3);
-    d.pdf *= envShare;
+                                      int vertex, const glm::vec3& beta) const {
+    const DirectionSample d = nee.sample(u1, u2, u3);
     if (!d.valid) return glm::vec3(0.0f);
     // The continuation ends paths below the true surface or the shading hemisphere: NEE agrees.
     if (glm::dot(d.wi, ng) <= 0.0f) return glm::vec3(0.0f);

@@ -140,26 +140,22 @@ private:
     // Next-event estimation from `origin` (the offset hit point the continuation ray leaves from):
     // one light chosen by uSelect, sampled with (u1, u2), shadow ray, MIS weight. Radiance
     // toward the viewer, before the path throughput. With `record`, fills its technique, pdf,
-    // MIS pdfs, weight, f·cos and radiance (the outlier tracer). lightsShare: the probability
-    // that the vertex's NEE went to the lights (envNeeShare, light_set.h; 1 where the env has its
-    // own shadow ray): the light technique's pdf is lightsShare / n x the light's.
+    // MIS pdfs, weight, f·cos and radiance (the outlier tracer).
     glm::vec3 nextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                         const DirectionSampler* ds, const glm::vec3& wo, const glm::vec3& ng, const glm::vec3& origin,
                         float uSelect, float u1, float u2,
-                        PathEvent* record = nullptr, float lightsShare = 1.0f) const;
+                        PathEvent* record = nullptr) const;
 
     // Next-event estimation of DIRECT environment light (issue 20; env, mis, wavelet, oracle):
     // a direction from the vertex's NEE technique `nee` with (u1, u2, u3), a shadow ray, the env's
     // radiance, MIS-weighted against the BSDF continuation (`env`: weight 1). Radiance toward the
     // viewer before the path throughput; with `events`, also records the term (beta: the
-    // throughput, for the record only). envShare: the probability that the vertex's NEE went to
-    // the env (envNeeShare; 1 where the env has its own shadow ray): the NEE pdf is envShare x
-    // the technique's.
+    // throughput, for the record only).
     glm::vec3 envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                            const DirectionSampler& nee, const glm::vec3& wo, const glm::vec3& ng,
                            const glm::vec3& origin, float u1, float u2, float u3,
                            std::vector<PathEvent>* events, int vertex,
-                           const glm::vec3& beta, float envShare = 1.0f) const;
+                           const glm::vec3& beta) const;
 
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;

@@ -322,11 +322,11 @@ TEST(CpuPathTracerLights, LightOnlyBsdfOnlyAndMisAgreeOnAGlossyPlane) {
     }
 }
 
-TEST(CpuPathTracerLights, MisOneNeeRayForEnvAndLightsAgreesWithBsdf) {
-    // `mis` over a lit env with analytic lights traces one NEE shadow ray per vertex, to the env
-    // or to a light by envNeeShare (docs/estimator.md "One NEE shadow ray per vertex"): its mean
-    // must equal `bsdf`'s (lights by NEE, env by BSDF sampling alone). A glossy plane that
-    // mirrors a sphere light and a rect light, an env with a one-texel sun, two bounces.
+TEST(CpuPathTracerLights, MisOverEnvAndLightsAgreesWithBsdf) {
+    // `mis` over a lit env with analytic lights (env NEE by the alias-table env technique, light
+    // NEE, each MIS-weighted against the BSDF continuation): its mean must equal `bsdf`'s (lights
+    // by NEE, env by BSDF sampling alone). A glossy plane that mirrors a sphere light and a rect
+    // light, an env with a one-texel sun, two bounces.
     scene::Material ggx;
     ggx.brdf = "ggx";
     ggx.roughness = 0.3f;
@@ -365,7 +365,7 @@ TEST(CpuPathTracerLights, MisOneNeeRayForEnvAndLightsAgreesWithBsdf) {
     const double sigma = std::hypot(m[0].standardError, m[1].standardError);
     EXPECT_NEAR(m[1].mean, m[0].mean, kStrategySigmas * sigma);
     EXPECT_GT(m[0].mean, 0.0);
-    std::printf("[ one NEE ray ] bsdf %.4f±%.4f mis %.4f±%.4f (|z| %.2f); "
+    std::printf("[ env + lights ] bsdf %.4f±%.4f mis %.4f±%.4f (|z| %.2f); "
                 "variance mis/bsdf %.2f\n",
                 m[0].mean, m[0].standardError, m[1].mean, m[1].standardError,
                 std::abs(m[1].mean - m[0].mean) / sigma, m[1].pixelVariance / m[0].pixelVariance);

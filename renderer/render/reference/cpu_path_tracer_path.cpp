@@ -2,7 +2,6 @@
 // tracer, scene swaps and passes, is cpu_path_tracer.cpp).
 #include "render/reference/cpu_path_tracer.h"
 
-#include "render/lights/light_set.h"
 #include "render/reference/cpu_surface.h"
 #include "util/hemisphere_sampling.h"
 #include "util/path_sampler.h"
@@ -44,9 +43,6 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
     // The env NEE technique of the vertex that drew `dir` (issue 20), kept so that env light the
     // continuation finds is MIS-weighted against it; empty: that vertex did no env NEE.
     std::optional<DirectionSampler> neeOfDir;
-    // The probabilities with which the vertex that drew `dir` sent its NEE to the env and to the
-    // lights (envNeeShare: `mis` traces one NEE shadow ray per vertex for both; else 1 and 1).
-    float envShareOfDir = 1.0f, lightsShareOfDir = 1.0f;
     // LightMix: each term below is also added to its emitter's group (docs/estimator.md "Light
     // groups"), the same float value that is added to L.
     if (groups) std::fill(groups, groups + m_groups.size(), glm::vec3(0.0f));
@@ -79,7 +75,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         if (!m_lights.empty()) {
             const glm::vec3 e = m_lights.emissionAlongRay(
                 origin, dir, found ? hit.t : kInfinity, scatterPdfOfDir, depth == 0,
-                m_lightStrategy, groups ? perLight.data() : nullptr, lightsShareOfDir);
+                m_lightStrategy, groups ? perLight.data() : nullptr);
             L += beta * e;
             for (size_t k = 0; k < perLight.size(); ++k)
                 splat(m_groups.groupOfLight[k], beta * perLight[k]);
@@ -91,7 +87,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             // continuation's find against it (`env`: NEE alone, so 0).
             float w = 1.0f, neePdf = 0.0f;
             if (neeOfDir) {
-                neePdf = envShareOfDir * neeOfDir->pdf(dir);
+                neePdf = neeOfDir->pdf(dir);
                 w = kind == SamplerKind::Env ? 0.0f : powerWeight(scatterPdfOfDir, neePdf);
             }
             const glm::vec3 e = m_environment.radiance(dir);
@@ -144,31 +140,14 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         // strategies evaluate their pdfs at the same point.
         const glm::vec3 next =
             sp.position + ng * (kRayOffset * std::max(1.0f, glm::length(sp.position)));
-        // `mis`: one NEE shadow ray per vertex, to the env with probability envShare, else to
-        // one light; uSelect makes the choice (the draws stay those of docs/estimator.md).
-        const bool oneNeeRay = kind == SamplerKind::Mis && neeSampler && !m_lights.empty();
-        const float envShare =
-            oneNeeRay ? envNeeShare(float(m_samplerTables->environment().exact().integral()),
-                                    m_lights.irradianceGuess(next, frame.n))
-                      : 1.0f;
-        const float lightsShare = oneNeeRay ? 1.0f - envShare : 1.0f;
-        bool toEnv = true, toLights = true; // the NEE this vertex does
         if (!m_lights.empty()) {
-            float uSelect = rng.next1D();
+            const float uSelect = rng.next1D();
             const auto [ul1, ul2] = rng.next2D();
-            if (oneNeeRay) {
-                toEnv = uSelect < envShare;
-                toLights = !toEnv;
-                uSelect = (uSelect - envShare) / lightsShare; // select() clamps it
-            }
             PathEvent lightEvent;
-            const glm::vec3 e = toLights ? nextEvent(mat, frame, sampler, wo, ng, next, uSelect,
-                                                     ul1, ul2, vertex ? &lightEvent : nullptr,
-                                                     lightsShare)
-                                         : glm::vec3(0.0f);
+            const glm::vec3 e = nextEvent(mat, frame, sampler, wo, ng, next, uSelect, ul1, ul2,
+                                          vertex ? &lightEvent : nullptr);
             L += beta * e;
-            if (groups && toLights)
-                splat(m_groups.groupOfLight[m_lights.select(uSelect)], beta * e);
+            if (groups) splat(m_groups.groupOfLight[m_lights.select(uSelect)], beta * e);
             addEvent(depth, "light-nee", lightEvent.technique, lightEvent.pdf,
                      std::move(lightEvent.misPdfs), lightEvent.weight, lightEvent.fcos,
                      lightEvent.radiance, beta, beta * e);
@@ -179,10 +158,10 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             // NEE technique (docs/estimator.md "Random numbers").
             const auto [ue1, ue2] = rng.next2D();
             const float ue3 = rng.next1D();
-            if (neeSampler && toEnv) {
+            if (neeSampler) {
                 const glm::vec3 e =
                     envNextEvent(mat, frame, *neeSampler, wo, ng, next, ue1, ue2, ue3,
-                                 vertex ? &record->events : nullptr, depth, beta, envShare);
+                                 vertex ? &record->events : nullptr, depth, beta);
                 L += beta * e;
                 splat(m_groups.environmentGroup, beta * e);
             }
@@ -236,8 +215,6 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             neeOfDir = std::move(ds);
         else
             neeOfDir.reset();
-        envShareOfDir = envShare;
-        lightsShareOfDir = lightsShare;
 
         origin = next;
         dir = wi;

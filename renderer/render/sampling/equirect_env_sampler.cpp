@@ -101,7 +101,6 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
     for (double m : rowMass)
         total += m;
     s.m_lit = total > 0.0 && std::isfinite(total);
-    s.m_integral = s.m_lit ? total : 0.0;
     s.m_rowAlias.resize(size_t(h));
     buildAlias(rowMass.data(), h, s.m_rowAlias.data());
     s.m_pdf.assign(weights.size(), 0.0);

@@ -34,8 +34,6 @@ public:
     static EquirectEnvSampler build(const scene::Environment& env);
 
     bool hasLight() const { return m_lit; }
-    // The luminance integral over the sphere, sum of luminance x solid angle (envNeeShare).
-    double integral() const { return m_integral; }
     int width() const { return m_width; }
     int height() const { return m_height; }
     // One alias-table slot: keep the slot's own entry with probability `threshold`, else take
@@ -63,7 +61,6 @@ public:
 private:
     int m_width = 0, m_height = 0;
     bool m_lit = false;
-    double m_integral = 0.0;
     std::vector<AliasSlot> m_rowAlias, m_columnAlias;
     std::vector<double> m_rowOmega, m_pdf;
 };
