@@ -71,6 +71,15 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
 
 bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) && !blockedByOthers(s, texel); }
 
+// visit(t) for every visible texel t (lit, no other object in the way), walking the lit bits.
+template <class Visit> void forEachVisibleTexel(const PointState& s, Visit&& visit) {
+    for (size_t w = 0; w < s.lit.size(); ++w)
+        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
+            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
+            if (!blockedByOthers(s, t)) visit(t);
+        }
+}
+
 // The K largest of the Haar coefficients `coeffs` (index 0 the scaling coefficient, always kept)
 // by luminance-weighted magnitude, into `out`.
 template <typename Value, typename Score, typename ToRgb>
@@ -284,14 +293,11 @@ static void rebuildGreyTransfer(const TransferContext& ctx, const PreviewPoint& 
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
     const double finest = std::ldexp(1.0, -level);
-    for (size_t w = 0; w < s.lit.size(); ++w)
-        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
-            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            if (blockedByOthers(s, t)) continue;
-            glm::vec3 f0(0.0f);
-            texels[t] = double(unshadowed(ctx, p, frame, wo, t, m.params, &m.black, &f0).x) * finest;
-            texels0[t] = double(f0.x) * finest;
-        }
+    forEachVisibleTexel(s, [&](size_t t) {
+        glm::vec3 f0(0.0f);
+        texels[t] = double(unshadowed(ctx, p, frame, wo, t, m.params, &m.black, &f0).x) * finest;
+        texels0[t] = double(f0.x) * finest;
+    });
     compressGrey(texels, level, ctx.keep, s.transfer);
     compressGrey(texels0, level, ctx.keep, s.transfer0);
 }
@@ -312,14 +318,11 @@ void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointSta
     const glm::vec3 wo = frame.toLocal(p.wo);
     // Finest scaling coefficients: 2^-n times the texel value (haar.h).
     const double finest = std::ldexp(1.0, -level);
-    for (size_t w = 0; w < s.lit.size(); ++w)
-        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
-            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            if (blockedByOthers(s, t)) continue;
-            glm::vec3 f0(0.0f);
-            texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0)) * finest;
-            if (affine) texels0[t] = glm::dvec3(f0) * finest;
-        }
+    forEachVisibleTexel(s, [&](size_t t) {
+        glm::vec3 f0(0.0f);
+        texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0)) * finest;
+        if (affine) texels0[t] = glm::dvec3(f0) * finest;
+    });
     compressMaybeGrey(texels, level, ctx.keep, s.transfer);
     if (affine) compressMaybeGrey(texels0, level, ctx.keep, s.transfer0);
     else s.transfer0 = SparseTransfer{};
