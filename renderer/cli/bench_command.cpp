@@ -56,9 +56,13 @@ util::Result<std::vector<std::string>> splitSamplers(const std::string& list) {
 }
 
 // Renders until `seconds` of pass time have elapsed (at least one pass); calls `checkpoint` after
-// passes 1, 2, 4, ... and after the last one.
+// passes 1, 2, 4, ... and after the last one. One pass is rendered and discarded first: lavapipe
+// compiles a kernel during its first dispatch (seconds, up to ~15 s with a cold shader cache), and
+// an equal-time comparison that counted it would rank the samplers by compile time.
 template <typename Checkpoint>
 util::Status renderFor(render::RenderSession& session, double seconds, Checkpoint&& checkpoint) {
+    if (auto s = session.renderPass(); !s) return s;
+    session.resetAccumulation();
     util::Timer timer;
     int nextCheckpoint = 1;
     for (;;) {

@@ -6,7 +6,9 @@
 //  FIRST..FIRST+COUNT-1 only, a part for `merge`; --mpi splits the passes over the ranks of an
 //  `mpirun` job: docs/farm.md). Every EXR carries the "wavelit:*" attributes of partial_render.h.
 // (architecture.md §6). Size and bounces default to the scene's render settings. Passes run until --spp
-// is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp). PNG output
+// is reached or --time has elapsed (both: whichever comes first; neither: kDefaultSpp); --time
+// counts from the end of the first pass, which on lavapipe includes the kernel's compile (up to
+// ~15 s with a cold shader cache, the state of every fresh machine). PNG output
 // applies the camera's exposure (display transform); EXR stores linear radiance. --report writes
 // the options, timings, choices with their reasons and the sampler tables built (sizes, build
 // times; docs/file-formats.md "Render report"). Exit codes: 0 success, 1 bad input (message
@@ -281,7 +283,9 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
         return reportError(session.error());
     const bool timed = args->has("--time");
     const int maxSpp = *range ? local.count : timed && !args->has("--spp") ? kMaxSpp : *spp;
-    util::Timer passes;
+    // The clock of --time starts after the first pass: lavapipe compiles the kernel during its
+    // first dispatch, and a budget that counted that compile left a fresh machine one pass.
+    std::optional<util::Timer> passes;
     // The outlier tracer (issue 20) reads the image after every pass: each pass's sample is the
     // running sum's increment, whatever the device.
     std::optional<render::OutlierMonitor> monitor;
@@ -297,7 +301,8 @@ int run(const std::vector<std::string>& argv, std::unique_ptr<MpiJob>& mpi) {
                 return reportError(mean.error());
             monitor->addPass(*mean);
         }
-    } while ((*session)->samplesPerPixel() < maxSpp && (!timed || passes.seconds() < *seconds));
+        if (!passes) passes.emplace();
+    } while ((*session)->samplesPerPixel() < maxSpp && (!timed || passes->seconds() < *seconds));
 
     auto image = (*session)->image();
     if (!image)
