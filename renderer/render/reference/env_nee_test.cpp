@@ -14,6 +14,7 @@
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/reference/cpu_path_tracer.h"
 #include "render/reference/outlier_tracer.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/testing/sampler_test_envs.h"
 #include "scene/bvh.h"
 
@@ -135,6 +136,7 @@ TEST(EnvNee, MisShadowRayRouletteKeepsTheMean) {
     dark.name = "dark";
     dark.brdf = "lambert";
     dark.baseColor = glm::vec3(0.04f);
+    static_assert(0.04 / std::numbers::pi < kMisEnvRoulette, "every shadow ray must play");
     const auto scene = makeFurnaceScene(dark, glm::vec3(1.0f), 32, 16);
     constexpr int kSize = 24, kPasses = 256;
     double mean[2], var[2]; // the image mean and its variance (pixels' own noise only)

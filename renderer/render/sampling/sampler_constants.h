@@ -14,7 +14,7 @@ inline constexpr double kMisWeight = 0.5;
 // that is the unoccluded term over the env's luminance integral: no light's or env's intensity
 // enters p, and each path's estimate stays linear in every intensity (LightMix, LightRemix).
 // docs/performance.md "`mis` pass cost, round 3".
-inline constexpr double kMisEnvRoulette = 0.02;
+inline constexpr double kMisEnvRoulette = 0.05;
 
 // The env share of the product mixtures (`wavelet`, `oracle`) is chosen per shading point from
 // the tail's second moment against the lobe's, c_env ~ sqrt(M_tail) / (sqrt(M_tail) +
