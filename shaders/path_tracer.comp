@@ -145,27 +145,7 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
 }
 
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-// CpuPathTracer::envNextEvent: direct env light from the vertex's NEE technique `ds` (the env for
-// mis), shadow ray, MIS against the BSDF continuation (env: weight 1).
-vec3 envNextEvent(DirSampler ds, uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
-                  vec3 ng, vec3 o, float u1, float u2, float u3, bool envAlone,
-                  uint triangleCount) {
-    vec3 wiWorld;
-    float pdf;
-    if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) return vec3(0.0);
-    if (dot(wiWorld, ng) <= 0.0) return vec3(0.0);
-    vec3 wi = frameToLocal(frame, wiWorld);
-    if (wi.z <= 0.0) return vec3(0.0);
-    vec3 f = brdfEval(type, baseColor, roughness, wo, wi);
-    if (all(equal(f, vec3(0.0)))) return vec3(0.0);
-    uint tri;
-    float t, b1, b2;
-    if (bvhTrace(o, wiWorld, 0.0, kFloatMax, true, triangleCount, tri, t, b1, b2))
-        return vec3(0.0);
-    vec3 Le = envRadiance(wiWorld);
-    float w = envAlone ? 1.0 : powerHeuristic(pdf, brdfPdf(type, roughness, wo, wi));
-    return f * Le * (wi.z * w / pdf);
-}
+#include "sampling/env_nee.glsl"
 #endif
 
 void main() {
@@ -188,7 +168,11 @@ void main() {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float scatterPdfOfDir = 0.0; // solid-angle pdf with which the last vertex drew `dir`
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-    uint kind = params.samplerInfo.x;
+    // The tracer's sampler is fixed when its pipeline is made (gpu_path_tracer.cpp defines it):
+    // a constant lets the compiler drop the other kinds' code (uniform/cosine continuations, the
+    // general mixture set-up and pdfs); params.samplerInfo.x carries the same code.
+    // docs/performance.md "`mis` pass cost, round 3": -0.65 of a 10.6 CPU-s `mis` pass.
+    const uint kind = WAVELIT_SAMPLER_KIND;
     bool lit = params.samplerInfo.y != 0u;
     // The kinds whose vertex sampler draws the continuation (else it is the env NEE technique).
     bool continuationFromSampler = kind == kSamplerUniform || kind == kSamplerCosine;
@@ -210,6 +194,17 @@ void main() {
         if (!found) {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
+            // mis: one texel lookup gives both the radiance and the env technique's pdf.
+            if (neeOfDir && kind == kSamplerMis) {
+                uvec2 t = envExactTexel(ds.exactOffset, dir, ds.cosSinYaw);
+                w = powerHeuristic(scatterPdfOfDir, float(envExactTexelPdf(ds.exactOffset, t)));
+                vec3 escaped = beta * (w * envTexelRadiance(t));
+                L += escaped;
+#ifdef WAVELIT_LIGHT_GROUPS
+                splatGroup(environmentGroup, pixelIndex, escaped);
+#endif
+                break;
+            }
             if (neeOfDir)
                 w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, dsPdf(ds, dir));
 #endif
@@ -282,7 +277,9 @@ void main() {
             vec2 ue = psNext2D(rng);
             float ue3 = psNext1D(rng);
             if (vertexNee) {
-                vec3 envDirect = beta * envNextEvent(ds, brdfType, mat.baseColorRoughness.rgb,
+                vec3 envDirect = beta * envNextEvent(ds, globals.kind == kSamplerEnv,
+                                                     kind == kSamplerMis, beta, brdfType,
+                                                     mat.baseColorRoughness.rgb,
                                                      mat.baseColorRoughness.a, frame, wo, ng, next,
                                                      ue.x, ue.y, ue3, kind == kSamplerEnv,
                                                      triangleCount);

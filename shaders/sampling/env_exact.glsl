@@ -38,9 +38,14 @@ double envExactTexelPdf(uint offset, uvec2 t) {
     return envExactWord(pdfs + 2u * (t.y * size.x + t.x));
 }
 
+// The texel world direction wi looks up (the radiance's texel too: the tables cover the map).
+uvec2 envExactTexel(uint offset, vec3 wi, vec2 cosSinYaw) {
+    return equirectTexelOf(wi, cosSinYaw, envExactSize(offset));
+}
+
 // Solid-angle pdf at world direction wi.
 double envExactPdf(uint offset, vec3 wi, vec2 cosSinYaw) {
-    return envExactTexelPdf(offset, equirectTexelOf(wi, cosSinYaw, envExactSize(offset)));
+    return envExactTexelPdf(offset, envExactTexel(offset, wi, cosSinYaw));
 }
 
 // An env-local direction.

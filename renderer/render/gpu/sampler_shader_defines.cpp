@@ -61,6 +61,7 @@ std::vector<std::string> samplerShaderDefines() {
         defineUint("MODE_ORACLE", kGpuSamplerOracle),
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
+        define("MIS_ENV_ROULETTE", floatLiteral(kMisEnvRoulette)),
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
         define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),

@@ -1,6 +1,7 @@
 #include "render/reference/cpu_path_tracer.h"
 
 #include "render/reference/cpu_surface.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/session/integrator_factory.h"
 #include "util/hemisphere_sampling.h"
 #include "util/rng.h"
@@ -213,14 +214,25 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
     if (wi.z <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 f = mat.brdf->eval(mat.params, wo, wi);
     if (f == glm::vec3(0.0f)) return glm::vec3(0.0f);
-    if (scene::occluded(*m_bvh, origin, d.wi, 0.0f, std::numeric_limits<float>::max()))
-        return glm::vec3(0.0f);
-    const glm::vec3 Le = m_environment.radiance(d.wi);
     // `env`: light sampling alone; the others: power heuristic against the BSDF continuation.
     const float bsdfPdf =
         m_options.sampler == SamplerKind::Env ? 0.0f : mat.brdf->pdf(mat.params, wo, wi);
     const float w = m_options.sampler == SamplerKind::Env ? 1.0f : powerWeight(d.pdf, bsdfPdf);
-    const glm::vec3 value = f * Le * (wi.z * w / d.pdf);
+    float scale = wi.z * w / d.pdf;
+    // `mis`: Russian roulette on the shadow ray (sampler_constants.h kMisEnvRoulette; env_nee.glsl
+    // is the twin), u3 its coin: the env technique alone draws no technique with it.
+    if (m_options.sampler == SamplerKind::Mis) {
+        const glm::vec3 bf = beta * f;
+        const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / float(kMisEnvRoulette);
+        if (p < 1.0f) {
+            if (!(u3 < p)) return glm::vec3(0.0f);
+            scale /= p;
+        }
+    }
+    if (scene::occluded(*m_bvh, origin, d.wi, 0.0f, std::numeric_limits<float>::max()))
+        return glm::vec3(0.0f);
+    const glm::vec3 Le = m_environment.radiance(d.wi);
+    const glm::vec3 value = f * Le * scale;
     if (events && value != glm::vec3(0.0f)) {
         PathEvent e;
         e.vertex = vertex;

@@ -150,7 +150,8 @@ private:
     // a direction from the vertex's NEE technique `nee` with (u1, u2, u3), a shadow ray, the env's
     // radiance, MIS-weighted against the BSDF continuation (`env`: weight 1). Radiance toward the
     // viewer before the path throughput; with `events`, also records the term (beta: the
-    // throughput, for the record only).
+    // throughput, for the record and `mis`'s Russian roulette on the shadow ray, whose coin is
+    // u3).
     glm::vec3 envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
                            const DirectionSampler& nee, const glm::vec3& wo, const glm::vec3& ng,
                            const glm::vec3& origin, float u1, float u2, float u3,

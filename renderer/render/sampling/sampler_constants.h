@@ -8,6 +8,13 @@ namespace wavelit::render {
 
 // `mis`: one-sample MIS of bsdf and env at 1/2 each (the balance heuristic in that model).
 inline constexpr double kMisWeight = 0.5;
+// `mis`: Russian roulette on the env NEE shadow ray. It is traced with probability
+// p = min(1, max(beta f) cos w / kMisEnvRoulette) (beta the path throughput, f the BRDF, w the
+// MIS weight) and its term divided by p. The env technique's pdf is luminance x solid angle, so
+// that is the unoccluded term over the env's luminance integral: no light's or env's intensity
+// enters p, and each path's estimate stays linear in every intensity (LightMix, LightRemix).
+// docs/performance.md "`mis` pass cost, round 3".
+inline constexpr double kMisEnvRoulette = 0.05;
 
 // The env share of the product mixtures (`wavelet`, `oracle`) is chosen per shading point from
 // the tail's second moment against the lobe's, c_env ~ sqrt(M_tail) / (sqrt(M_tail) +
