@@ -25,6 +25,7 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
     std::unique_ptr<CoarseToFinePreview> out(new CoarseToFinePreview());
     out->m_fine = std::move(fine).value();
     out->m_coarse = std::move(coarse).value();
+    out->snapshot();
     return out;
 }
 
@@ -43,7 +44,18 @@ EditSummary CoarseToFinePreview::applyFine() {
     if (!m_pending) return EditSummary{"display", {}, 0, 0.0, 0.0};
     Pending pending = std::move(*m_pending);
     m_pending.reset();
-    return m_fine->applyChanges(*pending.scene, pending.changes);
+    const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);
+    snapshot();
+    return summary;
+}
+
+void CoarseToFinePreview::snapshot() {
+    m_base = firstAnswerBase(*m_fine, *m_coarse);
+}
+
+util::ImageRGB CoarseToFinePreview::firstAnswer(int width, int height) const {
+    if (!m_pending) return m_fine->image(width, height);
+    return correctedFirstAnswer(m_base, *m_coarse, width, height);
 }
 
 util::ImageRGB CoarseToFinePreview::image(int width, int height) const {

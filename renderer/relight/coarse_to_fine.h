@@ -10,6 +10,7 @@
 // on the edited scene (and the coarse one a coarse create), as each preview alone does.
 #pragma once
 
+#include "relight/first_answer.h"
 #include "relight/relight_preview.h"
 
 #include <memory>
@@ -40,6 +41,10 @@ public:
     // The full preview's image when nothing is pending, else the coarse one's.
     util::ImageRGB image(int width, int height) const;
     util::ImageRGB coarseImage(int width, int height) const { return m_coarse->image(width, height); }
+    // APPROXIMATE first answer while the full one is pending (first_answer.h): the full image of
+    // the last applyFine corrected by the coarse preview's change since; the full image when
+    // nothing is pending. Much closer to the exact full answer than coarseImage (§7.0c).
+    util::ImageRGB firstAnswer(int width, int height) const;
 
     const RelightPreview& fine() const { return *m_fine; }
     const RelightPreview& coarse() const { return *m_coarse; }
@@ -51,6 +56,9 @@ private:
     };
     std::unique_ptr<RelightPreview> m_fine, m_coarse;
     std::optional<Pending> m_pending;
+    // At the full preview's state (create, applyFine): its image and the coarse one's.
+    FirstAnswerBase m_base;
+    void snapshot();
 };
 
 } // namespace wavelit::relight

@@ -69,6 +69,7 @@ public:
     const scene::Scene& scene() const { return *m_scene; }
     const std::vector<PreviewPoint>& points() const { return m_points; }
     const std::vector<PointState>& states() const { return m_states; }
+    const scene::Bvh& bvh() const { return m_bvh; } // every object of scene()
     TransferContext context() const;
     size_t hitCount() const;
     size_t stateBytes() const; // sum of PointState::bytes over hit points
