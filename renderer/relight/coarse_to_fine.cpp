@@ -31,6 +31,10 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
 
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
     const EditSummary summary = m_coarse->applyChanges(edited, changes);
+    for (const scene::Invalidation& inv : changes.invalidations())
+        if (inv.factor == scene::FactorKind::Environment || inv.factor == scene::FactorKind::Light ||
+            inv.factor == scene::FactorKind::Camera)
+            m_correctable = false;
     if (m_pending) {
         m_pending->changes.merge(changes);
         *m_pending->scene = edited;
@@ -51,10 +55,12 @@ EditSummary CoarseToFinePreview::applyFine() {
 
 void CoarseToFinePreview::snapshot() {
     m_base = firstAnswerBase(*m_fine, *m_coarse);
+    m_correctable = true;
 }
 
 util::ImageRGB CoarseToFinePreview::firstAnswer(int width, int height) const {
     if (!m_pending) return m_fine->image(width, height);
+    if (!m_correctable) return m_coarse->image(width, height);
     return correctedFirstAnswer(m_base, *m_coarse, width, height);
 }
 

@@ -43,7 +43,9 @@ public:
     util::ImageRGB coarseImage(int width, int height) const { return m_coarse->image(width, height); }
     // APPROXIMATE first answer while the full one is pending (first_answer.h): the full image of
     // the last applyFine corrected by the coarse preview's change since; the full image when
-    // nothing is pending. Much closer to the exact full answer than coarseImage (§7.0c).
+    // nothing is pending. Much closer to the exact full answer than coarseImage for object and
+    // material edits (§7.0c); once an environment, light or camera edit is pending it is
+    // coarseImage (there the correction measured worse than the coarse image).
     util::ImageRGB firstAnswer(int width, int height) const;
 
     const RelightPreview& fine() const { return *m_fine; }
@@ -58,6 +60,7 @@ private:
     std::optional<Pending> m_pending;
     // At the full preview's state (create, applyFine): its image and the coarse one's.
     FirstAnswerBase m_base;
+    bool m_correctable = true; // no environment, light or camera edit pending
     void snapshot();
 };
 

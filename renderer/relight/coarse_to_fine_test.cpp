@@ -93,6 +93,12 @@ TEST(RelightCoarseToFine, CorrectedFirstAnswerIsCloseToTheExactPreview) {
     EXPECT_LE(first, 0.25 * before); // the correction, not the stale image, makes it close
     (*preview)->applyFine();
     EXPECT_LE(maxRelativeDifference((*preview)->firstAnswer(w, h), exact), 1e-6); // then exact
+    // A pending light move: the coarse image (the correction is for object and material edits).
+    scene::ChangeSet light;
+    ASSERT_TRUE(light.setProperty(scene, {K::Light, 7}, "position", glm::vec3(-1.0f, 2.2f, 0.3f)));
+    ASSERT_TRUE(light.apply(scene));
+    (*preview)->applyCoarse(scene, light);
+    EXPECT_EQ(maxRelativeDifference((*preview)->firstAnswer(w, h), (*preview)->coarseImage(w, h)), 0.0);
 }
 
 } // namespace
