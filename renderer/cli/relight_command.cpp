@@ -15,8 +15,9 @@
 // on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the
 // full one: DIR/edit_<i>_coarse.exr and per edit coarseMs, coarseImageMs (and coarseRelRMSE
 // with a reference); and the corrected first answer (relight/first_answer.h, approximate):
-// DIR/edit_<i>_first.exr, firstMs / firstCpuMs (the coarse edit + the correction), firstImageMs,
-// and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE against this edit's exact preview.
+// DIR/edit_<i>_first.exr, firstMs / firstCpuMs (the coarse edit, deferring the moved object's
+// own points, + the correction), firstImageMs, and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE
+// against this edit's exact preview (the coarse image with those points stale).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -180,7 +181,7 @@ int runRelight(const std::vector<std::string>& argv) {
             const relight::FirstAnswerBase base = relight::firstAnswerBase(**preview, *coarse);
             util::Timer coarseTimer;
             const double cpuBefore = processCpuMs();
-            coarse->applyChanges(scene, edit.changes);
+            coarse->applyChanges(scene, edit.changes, /*deferMovedObjects=*/true);
             e["coarseMs"] = coarseTimer.milliseconds();
             util::Timer firstTimer;
             firstImage = relight::correctedFirstAnswer(base, *coarse, *width, *height);
@@ -201,6 +202,7 @@ int runRelight(const std::vector<std::string>& argv) {
         const relight::EditSummary summary = (*preview)->applyChanges(scene, edit.changes);
         const double incrementalMs = incremental.milliseconds();
         const double incrementalCpuMs = processCpuMs() - cpuBefore;
+        if (coarse) coarse->applyChanges(scene, scene::ChangeSet{}); // its deferred points, as applyFine does
         util::Timer imageTimer;
         const util::ImageRGB image = (*preview)->image(*width, *height);
         const double imageMs = imageTimer.milliseconds();

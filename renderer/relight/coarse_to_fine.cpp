@@ -17,7 +17,8 @@ RelightSettings CoarseToFinePreview::coarseSettings(const RelightSettings& setti
 
 util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(const scene::Scene& scene,
                                                                                const RelightSettings& settings,
-                                                                               int coarseLevel, int pointStride) {
+                                                                               int coarseLevel, int pointStride,
+                                                                               bool deferMovedObjects) {
     auto fine = RelightPreview::create(scene, settings);
     if (!fine) return fine.error();
     auto coarse = RelightPreview::create(scene, coarseSettings(settings, coarseLevel, pointStride));
@@ -25,12 +26,13 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
     std::unique_ptr<CoarseToFinePreview> out(new CoarseToFinePreview());
     out->m_fine = std::move(fine).value();
     out->m_coarse = std::move(coarse).value();
+    out->m_deferMovedObjects = deferMovedObjects;
     out->snapshot();
     return out;
 }
 
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
-    const EditSummary summary = m_coarse->applyChanges(edited, changes);
+    const EditSummary summary = m_coarse->applyChanges(edited, changes, m_deferMovedObjects);
     for (const scene::Invalidation& inv : changes.invalidations())
         if (inv.factor == scene::FactorKind::Environment || inv.factor == scene::FactorKind::Light ||
             inv.factor == scene::FactorKind::Camera)
@@ -49,6 +51,7 @@ EditSummary CoarseToFinePreview::applyFine() {
     Pending pending = std::move(*m_pending);
     m_pending.reset();
     const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);
+    m_coarse->applyChanges(m_coarse->scene(), scene::ChangeSet{}); // rebuilds deferred points
     snapshot();
     return summary;
 }

@@ -22,11 +22,16 @@ class CoarseToFinePreview {
 public:
     // coarseLevel < 0: settings.level - 2 (at least 1). Keeps min(settings.keep, 4^coarseLevel)
     // coefficients on the coarse grid; pointStride >= 1: the coarse preview has
-    // ceil(width / stride) x ceil(height / stride) points. Errors as RelightPreview::create.
+    // ceil(width / stride) x ceil(height / stride) points. deferMovedObjects: applyCoarse leaves
+    // the coarse points on a moved object stale (RelightPreview::applyChanges; firstAnswer takes
+    // those pixels from the full image, §7.0c), applyFine rebuilds them; without it the coarse
+    // preview equals a coarse build from scratch after every applyCoarse. Errors as
+    // RelightPreview::create.
     static util::Result<std::unique_ptr<CoarseToFinePreview>> create(const scene::Scene& scene,
                                                                      const RelightSettings& settings,
                                                                      int coarseLevel = -1,
-                                                                     int pointStride = 1);
+                                                                     int pointStride = 1,
+                                                                     bool deferMovedObjects = false);
     // The coarse preview's settings for these arguments (what create uses).
     static RelightSettings coarseSettings(const RelightSettings& settings, int coarseLevel = -1,
                                           int pointStride = 1);
@@ -61,6 +66,7 @@ private:
     // At the full preview's state (create, applyFine): its image and the coarse one's.
     FirstAnswerBase m_base;
     bool m_correctable = true; // no environment, light or camera edit pending
+    bool m_deferMovedObjects = false;
     void snapshot();
 };
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -63,11 +64,14 @@ TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScra
 // The corrected first answer (first_answer.h) is approximate: over a drag of two frames of an
 // object its relative RMSE against the exact full preview stays within a bound, and well below the
 // coarse image's own; with nothing pending it is the full image.
-TEST(RelightCoarseToFine, CorrectedFirstAnswerIsCloseToTheExactPreview) {
+class RelightFirstAnswer : public ::testing::TestWithParam<bool> {};
+
+TEST_P(RelightFirstAnswer, CorrectedFirstAnswerIsCloseToTheExactPreview) {
     using K = scene::EntityKind;
     scene::Scene scene = testing::makeRelightScene();
     const RelightSettings settings = testing::smallSettings();
-    auto preview = CoarseToFinePreview::create(scene, settings, -1, 2);
+    const bool defer = GetParam(); // the moved object's coarse points left stale during the drag
+    auto preview = CoarseToFinePreview::create(scene, settings, -1, 2, defer);
     ASSERT_TRUE(preview);
     const int w = settings.width, h = settings.height;
     const util::ImageRGB stale = (*preview)->fine().image(); // before the drag
@@ -91,8 +95,15 @@ TEST(RelightCoarseToFine, CorrectedFirstAnswerIsCloseToTheExactPreview) {
     EXPECT_LE(first, 0.25);
     EXPECT_LE(first, 0.25 * coarse);
     EXPECT_LE(first, 0.25 * before); // the correction, not the stale image, makes it close
+    if (defer) {
+        EXPECT_GT(std::count((*preview)->coarse().deferred().begin(), (*preview)->coarse().deferred().end(), 1), 0);
+    }
     (*preview)->applyFine();
     EXPECT_LE(maxRelativeDifference((*preview)->firstAnswer(w, h), exact), 1e-6); // then exact
+    // and the coarse preview is a coarse build from scratch again (its deferred points rebuilt)
+    auto coarseScratch = RelightPreview::create(scene, (*preview)->coarse().settings());
+    ASSERT_TRUE(coarseScratch);
+    EXPECT_LE(maxRelativeDifference((*preview)->coarseImage(w, h), (*coarseScratch)->image(w, h)), 1e-6);
     // A pending light move: the coarse image (the correction is for object and material edits).
     scene::ChangeSet light;
     ASSERT_TRUE(light.setProperty(scene, {K::Light, 7}, "position", glm::vec3(-1.0f, 2.2f, 0.3f)));
@@ -100,6 +111,8 @@ TEST(RelightCoarseToFine, CorrectedFirstAnswerIsCloseToTheExactPreview) {
     (*preview)->applyCoarse(scene, light);
     EXPECT_EQ(maxRelativeDifference((*preview)->firstAnswer(w, h), (*preview)->coarseImage(w, h)), 0.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Defer, RelightFirstAnswer, ::testing::Bool());
 
 } // namespace
 } // namespace wavelit::relight

@@ -54,7 +54,8 @@ util::ImageRGB correctedFirstAnswer(const FirstAnswerBase& then, const RelightPr
     const int cw = now.width, ch = now.height, fw = then.fine.width, fh = then.fine.height;
     // Coarse points whose hit changed, and their neighbours: the fine pixels there may have changed.
     std::vector<uint8_t> changed(points.size(), 0), near(points.size(), 0);
-    for (size_t c = 0; c < points.size(); ++c) changed[c] = !(points[c] == then.coarsePoints[c]);
+    const std::vector<uint8_t>& deferred = coarseNow.deferred(); // their hit is the old one
+    for (size_t c = 0; c < points.size(); ++c) changed[c] = !(points[c] == then.coarsePoints[c]) || deferred[c];
     for (int y = 0; y < ch; ++y)
         for (int x = 0; x < cw; ++x) {
             if (!changed[size_t(y) * size_t(cw) + size_t(x)]) continue;
