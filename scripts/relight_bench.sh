@@ -12,11 +12,16 @@
 #     the drag lists of docs/relighting.md §7.0a (four light positions, two roughness values, two
 #     object moves per scene; glossy_sphere at --level 6), run A B A B ... RUNS times (default 2),
 #     and the median incrementalCpuMs / incrementalMs per edit kind and binary. PREVIEW=N (default
-#     256) sets the preview and output size.
+#     256) sets the preview and output size. FIRST=1 also takes the coarse-to-fine first answer
+#     (--coarse-level 3 --coarse-stride 2) in both binaries and prints a second table: the after
+#     binary's corrected first answer (firstCpuMs, firstMs, its relRMSE against the exact preview)
+#     next to the before binary's coarse answer (coarseMs) and full update.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" == --ab ]]; then
     before=$2 after=$3 runs=${4:-2} preview=${PREVIEW:-256}
+    first=()
+    [[ ${FIRST:-0} == 1 ]] && first=(--coarse-level 3 --coarse-stride 2)
     out=out/relight-ab
     mkdir -p "$out"
     cat > "$out/ring_on_ground.edits.json" <<'JSON'
@@ -57,7 +62,7 @@ JSON
                 echo "relight bench --ab: $s $v run $r"
                 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-$v" \
                     --report "$out/$s-$v-$r.json" --preview "$preview" --width "$preview" --height "$preview" \
-                    --threads 2 --level "$level" --skip-full-rebuild >/dev/null
+                    --threads 2 --level "$level" --skip-full-rebuild "${first[@]}" >/dev/null
             done
         done
     done
@@ -79,6 +84,23 @@ for s in ("ring_on_ground", "cornell_box", "glossy_sphere"):
         wall = {v: statistics.median(w for _, w in d[v]) for v in ("before", "after")}
         print(f"| {s} | {key} | {d['points']} | {cpu['before']:.1f} ({len(d['before'])}) | {cpu['after']:.1f} "
               f"({len(d['after'])}) | {cpu['after'] / max(cpu['before'], 1e-3):.2f} | {wall['before']:.0f} -> {wall['after']:.0f} |")
+first = {}
+for s in ("ring_on_ground", "cornell_box", "glossy_sphere"):
+    for r in range(1, runs + 1):
+        for e in json.load(open(f"{out}/{s}-after-{r}.json"))["edits"]:
+            if "firstCpuMs" in e:
+                first.setdefault((s, f"{e['entity']} {e['property']}"), []).append(e)
+        for e in json.load(open(f"{out}/{s}-before-{r}.json"))["edits"]:
+            if "coarseMs" in e:
+                first.setdefault((s, f"{e['entity']} {e['property']}"), []).append(dict(beforeCoarseMs=e["coarseMs"]))
+if first:
+    print()
+    print("| scene | edit | full update CPU ms (after) | first answer CPU ms | first answer wall ms | before: coarse answer wall ms | relRMSE vs exact preview: first answer | coarse image |")
+    print("|---|---|---|---|---|---|---|---|")
+    med = lambda es, k: statistics.median(e[k] for e in es if k in e)
+    for (s, key), es in first.items():
+        print(f"| {s} | {key} | {med(es, 'incrementalCpuMs'):.0f} | {med(es, 'firstCpuMs'):.1f} | {med(es, 'firstMs'):.1f} | "
+              f"{med(es, 'beforeCoarseMs'):.1f} | {med(es, 'firstVsPreviewRelRMSE'):.3f} | {med(es, 'coarseVsPreviewRelRMSE'):.3f} |")
 PY
     uptime
     exit 0

@@ -14,11 +14,15 @@
 // --coarse-level N: also the coarse-to-fine first answer (relight/coarse_to_fine.h) from a preview
 // on the 2^N grid (--coarse-stride S: on every S-th preview pixel per axis), applied before the
 // full one: DIR/edit_<i>_coarse.exr and per edit coarseMs, coarseImageMs (and coarseRelRMSE
-// with a reference).
+// with a reference); and the corrected first answer (relight/first_answer.h, approximate):
+// DIR/edit_<i>_first.exr, firstMs / firstCpuMs (the coarse edit, deferring the moved object's
+// own points, + the correction), firstImageMs, and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE
+// against this edit's exact preview (the coarse image with those points stale).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "relight/coarse_to_fine.h"
+#include "relight/first_answer.h"
 #include "relight/edit_list.h"
 #include "relight/relight_preview.h"
 #include "relight/sphere_level.h"
@@ -170,11 +174,23 @@ int runRelight(const std::vector<std::string>& argv) {
         const relight::PlannedEdit& edit = (*edits)[i];
         if (auto st = edit.changes.apply(scene); !st) return reportError(st.error());
         nlohmann::ordered_json e;
-        std::optional<util::ImageRGB> coarseImage;
+        std::optional<util::ImageRGB> coarseImage, firstImage;
         if (coarse) {
+            // The corrected first answer's inputs, taken when the full preview was last up to date
+            // (here: before this edit); the editor takes them after applyFine, off the drag.
+            const relight::FirstAnswerBase base = relight::firstAnswerBase(**preview, *coarse);
             util::Timer coarseTimer;
-            coarse->applyChanges(scene, edit.changes);
+            const double cpuBefore = processCpuMs();
+            coarse->applyChanges(scene, edit.changes, /*deferMovedObjects=*/true);
             e["coarseMs"] = coarseTimer.milliseconds();
+            util::Timer firstTimer;
+            firstImage = relight::correctedFirstAnswer(base, *coarse, *width, *height);
+            e["firstImageMs"] = firstTimer.milliseconds();
+            e["firstMs"] = coarseTimer.milliseconds(); // the coarse edit + the corrected image
+            e["firstCpuMs"] = processCpuMs() - cpuBefore;
+            e["firstAnswer"] = "approximate";
+            const std::string firstFile = (out / ("edit_" + std::to_string(i) + "_first.exr")).string();
+            if (auto st = scene::writeExr(firstFile, *firstImage); !st) return reportError(st.error());
             util::Timer coarseImageTimer;
             coarseImage = coarse->image(*width, *height);
             e["coarseImageMs"] = coarseImageTimer.milliseconds();
@@ -186,9 +202,14 @@ int runRelight(const std::vector<std::string>& argv) {
         const relight::EditSummary summary = (*preview)->applyChanges(scene, edit.changes);
         const double incrementalMs = incremental.milliseconds();
         const double incrementalCpuMs = processCpuMs() - cpuBefore;
+        if (coarse) coarse->applyChanges(scene, scene::ChangeSet{}); // its deferred points, as applyFine does
         util::Timer imageTimer;
         const util::ImageRGB image = (*preview)->image(*width, *height);
         const double imageMs = imageTimer.milliseconds();
+        if (firstImage) { // the approximate answers against this edit's exact preview
+            e["coarseVsPreviewRelRMSE"] = relight::relativeRmse(*coarseImage, image);
+            e["firstVsPreviewRelRMSE"] = relight::relativeRmse(*firstImage, image);
+        }
         const std::string file = (out / ("edit_" + std::to_string(i) + ".exr")).string();
         if (auto st = scene::writeExr(file, image); !st) return reportError(st.error());
         const bool skipFull = args->has("--skip-full-rebuild");

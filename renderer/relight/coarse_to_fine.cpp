@@ -17,7 +17,8 @@ RelightSettings CoarseToFinePreview::coarseSettings(const RelightSettings& setti
 
 util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(const scene::Scene& scene,
                                                                                const RelightSettings& settings,
-                                                                               int coarseLevel, int pointStride) {
+                                                                               int coarseLevel, int pointStride,
+                                                                               bool deferMovedObjects) {
     auto fine = RelightPreview::create(scene, settings);
     if (!fine) return fine.error();
     auto coarse = RelightPreview::create(scene, coarseSettings(settings, coarseLevel, pointStride));
@@ -25,11 +26,17 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
     std::unique_ptr<CoarseToFinePreview> out(new CoarseToFinePreview());
     out->m_fine = std::move(fine).value();
     out->m_coarse = std::move(coarse).value();
+    out->m_deferMovedObjects = deferMovedObjects;
+    out->snapshot();
     return out;
 }
 
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
-    const EditSummary summary = m_coarse->applyChanges(edited, changes);
+    const EditSummary summary = m_coarse->applyChanges(edited, changes, m_deferMovedObjects);
+    for (const scene::Invalidation& inv : changes.invalidations())
+        if (inv.factor == scene::FactorKind::Environment || inv.factor == scene::FactorKind::Light ||
+            inv.factor == scene::FactorKind::Camera)
+            m_correctable = false;
     if (m_pending) {
         m_pending->changes.merge(changes);
         *m_pending->scene = edited;
@@ -43,7 +50,21 @@ EditSummary CoarseToFinePreview::applyFine() {
     if (!m_pending) return EditSummary{"display", {}, 0, 0.0, 0.0};
     Pending pending = std::move(*m_pending);
     m_pending.reset();
-    return m_fine->applyChanges(*pending.scene, pending.changes);
+    const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);
+    m_coarse->applyChanges(m_coarse->scene(), scene::ChangeSet{}); // rebuilds deferred points
+    snapshot();
+    return summary;
+}
+
+void CoarseToFinePreview::snapshot() {
+    m_base = firstAnswerBase(*m_fine, *m_coarse);
+    m_correctable = true;
+}
+
+util::ImageRGB CoarseToFinePreview::firstAnswer(int width, int height) const {
+    if (!m_pending) return m_fine->image(width, height);
+    if (!m_correctable) return m_coarse->image(width, height);
+    return correctedFirstAnswer(m_base, *m_coarse, width, height);
 }
 
 util::ImageRGB CoarseToFinePreview::image(int width, int height) const {

@@ -10,6 +10,7 @@
 // on the edited scene (and the coarse one a coarse create), as each preview alone does.
 #pragma once
 
+#include "relight/first_answer.h"
 #include "relight/relight_preview.h"
 
 #include <memory>
@@ -21,11 +22,16 @@ class CoarseToFinePreview {
 public:
     // coarseLevel < 0: settings.level - 2 (at least 1). Keeps min(settings.keep, 4^coarseLevel)
     // coefficients on the coarse grid; pointStride >= 1: the coarse preview has
-    // ceil(width / stride) x ceil(height / stride) points. Errors as RelightPreview::create.
+    // ceil(width / stride) x ceil(height / stride) points. deferMovedObjects: applyCoarse leaves
+    // the coarse points on a moved object stale (RelightPreview::applyChanges; firstAnswer takes
+    // those pixels from the full image, §7.0c), applyFine rebuilds them; without it the coarse
+    // preview equals a coarse build from scratch after every applyCoarse. Errors as
+    // RelightPreview::create.
     static util::Result<std::unique_ptr<CoarseToFinePreview>> create(const scene::Scene& scene,
                                                                      const RelightSettings& settings,
                                                                      int coarseLevel = -1,
-                                                                     int pointStride = 1);
+                                                                     int pointStride = 1,
+                                                                     bool deferMovedObjects = false);
     // The coarse preview's settings for these arguments (what create uses).
     static RelightSettings coarseSettings(const RelightSettings& settings, int coarseLevel = -1,
                                           int pointStride = 1);
@@ -40,6 +46,12 @@ public:
     // The full preview's image when nothing is pending, else the coarse one's.
     util::ImageRGB image(int width, int height) const;
     util::ImageRGB coarseImage(int width, int height) const { return m_coarse->image(width, height); }
+    // APPROXIMATE first answer while the full one is pending (first_answer.h): the full image of
+    // the last applyFine corrected by the coarse preview's change since; the full image when
+    // nothing is pending. Much closer to the exact full answer than coarseImage for object and
+    // material edits (§7.0c); once an environment, light or camera edit is pending it is
+    // coarseImage (there the correction measured worse than the coarse image).
+    util::ImageRGB firstAnswer(int width, int height) const;
 
     const RelightPreview& fine() const { return *m_fine; }
     const RelightPreview& coarse() const { return *m_coarse; }
@@ -51,6 +63,11 @@ private:
     };
     std::unique_ptr<RelightPreview> m_fine, m_coarse;
     std::optional<Pending> m_pending;
+    // At the full preview's state (create, applyFine): its image and the coarse one's.
+    FirstAnswerBase m_base;
+    bool m_correctable = true; // no environment, light or camera edit pending
+    bool m_deferMovedObjects = false;
+    void snapshot();
 };
 
 } // namespace wavelit::relight

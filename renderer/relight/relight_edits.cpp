@@ -82,7 +82,8 @@ bool lightConeMeets(const scene::Light& light, const glm::vec3& origin, const Bo
 
 } // namespace
 
-EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes) {
+EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
+                                         bool deferMovedObjects) {
     EditSummary summary;
     if (structural(*m_scene, edited, changes)) {
         rebuildAll(edited);
@@ -194,8 +195,10 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
 
     summary.sharedMs = timer.milliseconds();
     timer.restart();
+    const bool anyDeferred = std::find(m_deferred.begin(), m_deferred.end(), uint8_t(1)) != m_deferred.end();
     // Power, colour and emission edits leave nothing per point: skip the pass over the points.
-    if (!recast && !environment && lights.empty() && materials.empty() && objects.empty()) {
+    if (!recast && !environment && lights.empty() && materials.empty() && objects.empty() &&
+        (!anyDeferred || deferMovedObjects)) {
         summary.pointsMs = timer.milliseconds();
         return summary;
     }
@@ -206,6 +209,32 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
         for (size_t k : lights) updateCameraLight(k, i, rays);
+        auto moved = [&](const PreviewPoint& q) {
+            return q.hit && std::find(objects.begin(), objects.end(), size_t(q.object)) != objects.end();
+        };
+        if (deferMovedObjects && recast && moved(cast[i])) {
+            // Its ray now meets the moved object: stale until an edit without deferral (its old
+            // hit and state kept, consistent with each other). A surface the object uncovered
+            // is rebuilt below as usual.
+            m_deferred[i] = 1;
+            touched[i] = 1;
+            return;
+        }
+        if (m_deferred[i]) { // deferred earlier: from scratch, on its current camera hit
+            m_deferred[i] = 0;
+            touched[i] = 1;
+            p = recast ? cast[i]
+                       : castPreviewPoint(*m_scene, m_bvh, m_settings.width, m_settings.height,
+                                          int(i % size_t(m_settings.width)), int(i / size_t(m_settings.width)));
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
+            if (p.hit) {
+                s = buildPointState(ctx, p);
+            } else {
+                s = PointState{};
+                m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
+            }
+            return;
+        }
         if (recast && !(cast[i] == p)) {
             PreviewPoint sameMaterial = p;
             sameMaterial.material = cast[i].material;

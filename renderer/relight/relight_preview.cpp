@@ -55,6 +55,7 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     buildEnvironment();
     m_points = castPreviewPoints(*m_scene, m_bvh, m_settings.width, m_settings.height, m_settings.threads);
     m_states.assign(m_points.size(), PointState{});
+    m_deferred.assign(m_points.size(), 0);
     m_background.assign(m_points.size(), glm::vec3(0.0f));
     m_cameraLights.assign(m_scene->lighting.lights.size(), std::vector<glm::vec3>(m_points.size()));
     const TransferContext ctx = context();

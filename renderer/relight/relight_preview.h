@@ -59,7 +59,13 @@ public:
                                                                 const RelightSettings& settings);
 
     // `edited` is the scene after `changes` was applied to this preview's scene.
-    EditSummary applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes);
+    // deferMovedObjects (the coarse preview of a drag, first_answer.h): points whose camera ray now
+    // meets an object this edit moves keep their old point and state — their image is stale, the
+    // rest exact — and are listed by deferred(); the next edit without it (an empty change set
+    // will do) rebuilds them from scratch first, so the preview equals create() again after it.
+    EditSummary applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
+                             bool deferMovedObjects = false);
+    const std::vector<uint8_t>& deferred() const { return m_deferred; }
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).
     util::ImageRGB image() const;
@@ -69,6 +75,7 @@ public:
     const scene::Scene& scene() const { return *m_scene; }
     const std::vector<PreviewPoint>& points() const { return m_points; }
     const std::vector<PointState>& states() const { return m_states; }
+    const scene::Bvh& bvh() const { return m_bvh; } // every object of scene()
     TransferContext context() const;
     size_t hitCount() const;
     size_t stateBytes() const; // sum of PointState::bytes over hit points
@@ -92,6 +99,7 @@ private:
     void buildEnvironment();
     std::vector<PreviewPoint> m_points;
     std::vector<PointState> m_states; // empty state for a miss
+    std::vector<uint8_t> m_deferred;   // per point: stale (applyChanges' deferMovedObjects)
     std::vector<glm::vec3> m_background; // environment seen by missed rays
     // Per light, per pixel: the light seen directly by the camera, per unit power.
     std::vector<std::vector<glm::vec3>> m_cameraLights;
