@@ -1,0 +1,192 @@
+// RelightPreview's translation drag through a shadow field (relight_preview.h enableShadowField,
+// docs/relighting.md §7.0d): per point, the dragged object's occlusion looked up in its field at
+// the point's offset from the object and combined with the point's drag cache (drag_cache.h).
+#include "relight/relight_preview.h"
+
+#include "relight/camera_lights.h"
+#include "relight/parallel_for.h"
+#include "util/timer.h"
+#include "wavelet/haar.h"
+
+#include <algorithm>
+
+namespace wavelit::relight {
+namespace {
+
+bool occludedBy(const PointState& s, size_t object) {
+    for (const Occlusion& o : s.occlusions)
+        if (o.object == object) return true;
+    return false;
+}
+
+} // namespace
+
+ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFieldSettings& settings) {
+    ShadowFieldInfo info;
+    if (m_field) settleFieldDrag(true);
+    if (object >= m_occluders.size()) return info;
+    m_field = std::make_unique<FieldDrag>();
+    m_field->object = object;
+    util::Timer timer;
+    m_field->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads);
+    info.fieldMs = timer.milliseconds();
+    info.fieldBytes = m_field->field.bytes();
+    m_field->approximate.assign(m_points.size(), 0);
+    timer.restart();
+    buildDragCaches();
+    info.cacheMs = timer.milliseconds();
+    for (const PointDragCache& c : m_field->caches)
+        if (c.valid) {
+            ++info.cachedPoints;
+            info.cacheBytes += c.bytes();
+        }
+    return info;
+}
+
+bool RelightPreview::fieldApproximate() const {
+    return m_field && std::find(m_field->approximate.begin(), m_field->approximate.end(), uint8_t(1)) !=
+                          m_field->approximate.end();
+}
+
+const std::vector<glm::vec3>& RelightPreview::fieldEnvTexels() const {
+    static const std::vector<glm::vec3> none;
+    return m_field ? m_field->envTexels : none;
+}
+
+bool RelightPreview::isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const {
+    if (!m_field || changes.edits().empty() || edited.objects.size() != m_scene->objects.size()) return false;
+    const scene::EntityRef ref{scene::EntityKind::Object, m_scene->objects[m_field->object].id};
+    for (const scene::Edit& e : changes.edits()) {
+        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
+        if (!edit || edit->entity != ref || edit->property != "translation") return false;
+    }
+    return true;
+}
+
+void RelightPreview::buildDragCaches() {
+    FieldDrag& f = *m_field;
+    scene::Scene without = *m_scene;
+    without.objects.erase(without.objects.begin() + std::ptrdiff_t(f.object));
+    f.bvhWithout = scene::buildBvh(without);
+    f.envTexels.assign(m_dirs.count(), glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c) {
+        const wavelet::SquareGrid grid =
+            wavelet::inverseHaar(wavelet::HaarImage{m_settings.level, m_environment.coefficients[size_t(c)]});
+        for (size_t t = 0; t < f.envTexels.size(); ++t)
+            f.envTexels[t][c] = float(grid.values[t] * m_dirs.texelSolidAngle());
+    }
+    const TransferContext ctx = context();
+    TransferContext ctxWithout = ctx;
+    ctxWithout.sceneBvh = &f.bvhWithout;
+    f.caches.assign(m_points.size(), PointDragCache{});
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        const PreviewPoint& p = m_points[i];
+        if (!p.hit || p.object == f.object) return;
+        PointState without = m_states[i];
+        if (occludedBy(without, f.object)) { // T' differs from T: its coefficients and 4 pi <T'_K, L>
+            std::erase_if(without.occlusions, [&](const Occlusion& o) { return o.object == f.object; });
+            rebuildTransfer(ctx, p, without);
+            updateEnvironmentTerms(ctx, without);
+        }
+        f.caches[i] = buildDragCache(ctxWithout, p, without);
+    });
+    f.cachesValid = true;
+}
+
+void RelightPreview::settleFieldDrag(bool dropField) {
+    FieldDrag& f = *m_field;
+    const TransferContext ctx = context();
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        if (!f.approximate[i]) return;
+        f.approximate[i] = 0;
+        updateOcclusion(ctx, m_points[i], m_states[i], uint32_t(f.object));
+        updateTransferAndTerms(ctx, m_points[i], m_states[i]);
+    });
+    f.caches.clear();
+    f.caches.shrink_to_fit();
+    f.cachesValid = false;
+    if (dropField) m_field.reset();
+}
+
+EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
+    FieldDrag& f = *m_field;
+    const size_t j = f.object;
+    EditSummary summary;
+    summary.kind = "object";
+    summary.method = "shadowField";
+    util::Timer timer;
+    const BoundingSphere oldBounds = m_occluders[j].bounds;
+    m_scene = std::make_unique<scene::Scene>(edited);
+    resolveMaterials();
+    m_occluders[j] = buildObjectOccluder(*m_scene, j, m_convexity);
+    summary.factorsRebuilt = {"occlusion:" + m_scene->objects[j].name + " (shadow field)", "gbuffer"};
+    if (!f.cachesValid) {
+        util::Timer cacheTimer;
+        buildDragCaches();
+        summary.cacheMs = cacheTimer.milliseconds();
+    }
+    m_bvh = scene::buildBvh(*m_scene);
+    const BoundingSphere sphere = m_occluders[j].bounds;
+    const std::vector<PreviewPoint> cast = recastNear({oldBounds, sphere});
+    summary.sharedMs = timer.milliseconds();
+    timer.restart();
+
+    const TransferContext ctx = context();
+    TransferContext ctxWithout = ctx;
+    ctxWithout.sceneBvh = &f.bvhWithout;
+    const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
+    std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        PreviewPoint& p = m_points[i];
+        PointState& s = m_states[i];
+        PointDragCache& cache = f.caches[i];
+        const bool hitChanged = !(cast[i] == p);
+        if (hitChanged) {
+            p = cast[i];
+            touched[i] = 1;
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
+            cache = PointDragCache{};
+            f.approximate[i] = 0;
+            if (!p.hit) {
+                s = PointState{};
+                m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
+                return;
+            }
+            if (p.object == j) { // the object's own surface: exact, with its rays
+                s = buildPointState(ctx, p);
+                rebuilt[i] = 1;
+                return;
+            }
+            // A surface the object uncovered: its factors without the object, then the field.
+            s = buildPointState(ctx, p, uint32_t(j));
+            cache = buildDragCache(ctxWithout, p, s);
+            rebuilt[i] = 1;
+        } else if (!p.hit || !cache.valid) {
+            return;
+        }
+        const glm::vec3 origin = rayOrigin(p);
+        const uint64_t* mask = f.field.lookup(origin - sphere.centre);
+        TexelBits cast_;
+        if (!mask) { // beyond the outer shell: j covers a few texels, ray-cast them
+            fallback[i] = 1;
+            cast_ = coneTexels(sphere, origin, m_dirs, cache.visible);
+            if (anyBit(cast_)) cast_ = castOcclusion(m_occluders[j], origin, m_dirs, cast_);
+            mask = cast_.data();
+        }
+        bool blocks = false;
+        for (size_t w = 0; w < cache.visible.size() && !blocks; ++w) blocks = (mask[w] & cache.visible[w]) != 0;
+        // Nothing of j in view now, nor in the terms the point holds: unchanged.
+        if (!blocks && !hitChanged && !f.approximate[i] && !occludedBy(s, j)) return;
+        applyDragMask(cache, mask, sphere, origin, f.envTexels, s);
+        f.approximate[i] = 1;
+        touched[i] = 1;
+    });
+    summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
+    summary.pointsRebuilt = size_t(std::count(rebuilt.begin(), rebuilt.end(), uint8_t(1)));
+    summary.fieldFallbacks = size_t(std::count(fallback.begin(), fallback.end(), uint8_t(1)));
+    summary.pointsMs = timer.milliseconds();
+    m_touched = std::move(touched);
+    return summary;
+}
+
+} // namespace wavelit::relight
