@@ -41,6 +41,7 @@
 #include "util/timer.h"
 
 #include <nlohmann/json.hpp>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -290,6 +291,21 @@ int runRelight(const std::vector<std::string>& argv) {
         if (exact) {
             exact->applyChanges(scene, edit.changes);
             e["fieldVsExactRelRMSE"] = relight::relativeRmse(image, exact->image(*width, *height));
+            if (std::getenv("SF_DEBUG")) { // temporary: error by distance bands from the object
+                const util::ImageRGB ex = exact->image();
+                const util::ImageRGB fi = (*preview)->image();
+                const auto ctx = (*preview)->context();
+                const relight::BoundingSphere b = (*ctx.occluders)[0].bounds;
+                double band[6] = {0}; size_t n[6] = {0};
+                for (size_t i = 0; i < ex.pixels.size(); ++i) {
+                    const auto& p = (*preview)->points()[i];
+                    double dd = 0; for (int c = 0; c < 3; ++c) { const double r = ex.pixels[i][c], d = fi.pixels[i][c] - r; dd += d * d / (r * r + 1e-2); }
+                    const double q = p.hit ? glm::length(p.position - b.centre) / b.radius : 99.0;
+                    const int k = !p.hit ? 5 : p.object == 0 ? 4 : q < 0.5 ? 0 : q < 1.0 ? 1 : q < 2.0 ? 2 : 3;
+                    band[k] += dd; n[k]++;
+                }
+                for (int k = 0; k < 6; ++k) std::printf("band %d: n %zu share %.4f\n", k, n[k], band[k] / (3.0 * double(ex.pixels.size())));
+            }
         }
         e["maxRelDiffVsFullRebuild"] = skipFull ? nlohmann::ordered_json(nullptr)
                                                 : nlohmann::ordered_json(maxRelativeDifference((*preview)->image(), (*scratch)->image()));

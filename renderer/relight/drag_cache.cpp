@@ -21,8 +21,10 @@ void append(std::vector<float>& out, const std::vector<glm::vec3>& v, int channe
 // Whether j, blocking the texel of `e` at infinity, lies between the point and the light: always
 // for the sun; for a local light when j's bounding sphere starts before the light along e's
 // direction (a ray that misses the sphere cannot hit j).
-bool blocksEntry(const LightContribution& e, const BoundingSphere& sphere, const glm::vec3& origin) {
+bool blocksEntry(const LightContribution& e, const BoundingSphere& sphere, const glm::vec3& origin,
+                 const scene::Bvh* objectBvh) {
     if (!std::isfinite(e.distance)) return true;
+    if (objectBvh) return scene::occluded(*objectBvh, origin, e.direction, 0.0f, e.distance * (1.0f - 1e-3f));
     const glm::vec3 oc = sphere.centre - origin;
     const float c = glm::dot(oc, oc) - sphere.radius * sphere.radius;
     if (c <= 0.0f) return true; // inside the sphere
@@ -68,7 +70,8 @@ PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPo
 }
 
 void applyDragMask(const PointDragCache& cache, const uint64_t* mask, const BoundingSphere& sphere,
-                   const glm::vec3& origin, const std::vector<glm::vec3>& envTexels, PointState& s) {
+                   const glm::vec3& origin, const std::vector<glm::vec3>& envTexels, PointState& s,
+                   const scene::Bvh* objectBvh, const float* weight) {
     glm::dvec3 cut(0.0), cut0(0.0);
     const size_t visibleCount = cache.values.size() / (size_t(cache.channels) * (cache.affine ? 2 : 1));
     const size_t blackAt = visibleCount * cache.channels;
@@ -78,7 +81,7 @@ void applyDragMask(const PointDragCache& cache, const uint64_t* mask, const Boun
                 const unsigned b = unsigned(__builtin_ctzll(bits));
                 const size_t t = w * 64 + b;
                 const size_t r = cache.rank[w] + size_t(__builtin_popcountll(cache.visible[w] & ((uint64_t(1) << b) - 1)));
-                const glm::dvec3 l(envTexels[t]);
+                const glm::dvec3 l = glm::dvec3(envTexels[t]) * (weight ? double(weight[t]) : 1.0);
                 const float* v = &cache.values[r * cache.channels];
                 cut += cache.channels == 1 ? l * double(v[0]) : l * glm::dvec3(v[0], v[1], v[2]);
                 if (cache.affine) {
@@ -94,7 +97,13 @@ void applyDragMask(const PointDragCache& cache, const uint64_t* mask, const Boun
     for (size_t k = 0; k < cache.lights.size(); ++k) {
         glm::vec3 sum(0.0f), sum0(0.0f);
         for (const LightContribution& e : cache.lights[k]) {
-            if (mask && ((mask[e.texel >> 6] >> (e.texel & 63)) & 1u) && blocksEntry(e, sphere, origin)) continue;
+            if (mask && ((mask[e.texel >> 6] >> (e.texel & 63)) & 1u) && blocksEntry(e, sphere, origin, objectBvh)) {
+                if (!weight || weight[e.texel] >= 1.0f) continue;
+                const float open = 1.0f - weight[e.texel];
+                sum += e.white * open;
+                sum0 += e.black * open;
+                continue;
+            }
             sum += e.white;
             sum0 += e.black;
         }

@@ -42,7 +42,13 @@ PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPo
 
 // The point's terms (envTerm(0), lightTerms(0)) with j's mask `mask` (null or all zero: j blocks
 // nothing) and j's bounding sphere now. `envTexels`: L(t) x the texel solid angle, per texel.
+// `objectBvh` (j's own BVH), when given, decides a local light's entries in j's mask with the
+// exact preview's shadow ray (on j alone) instead of the bounding-sphere test.
+// `weight` (per texel, read where `mask` is set; null: 1) is j's occlusion there, fractional for an
+// interpolated field (ShadowField::blend): the blocked share of the texel's T' L and of its light
+// entries is removed.
 void applyDragMask(const PointDragCache& cache, const uint64_t* mask, const BoundingSphere& sphere,
-                   const glm::vec3& origin, const std::vector<glm::vec3>& envTexels, PointState& s);
+                   const glm::vec3& origin, const std::vector<glm::vec3>& envTexels, PointState& s,
+                   const scene::Bvh* objectBvh = nullptr, const float* weight = nullptr);
 
 } // namespace wavelit::relight

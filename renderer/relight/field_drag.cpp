@@ -9,6 +9,7 @@
 #include "wavelet/haar.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace wavelit::relight {
 namespace {
@@ -135,6 +136,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     TransferContext ctxWithout = ctx;
     ctxWithout.sceneBvh = &f.bvhWithout;
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
+    const bool nearest = std::getenv("SF_NEAREST") != nullptr;
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
@@ -165,7 +167,33 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
             return;
         }
         const glm::vec3 origin = rayOrigin(p);
-        const uint64_t* mask = f.field.lookup(origin - sphere.centre);
+        // The interpolated field: the union of the blended samples' masks, and per texel of it
+        // the blended occlusion (thread-local, dense, written only on the union's texels).
+        thread_local std::vector<float> weight;
+        thread_local TexelBits unionBits;
+        const float* weights = nullptr;
+        const uint64_t* mask = nullptr;
+        ShadowField::Blend blend;
+        if (!nearest && f.field.blend(origin - sphere.centre, blend)) {
+            weight.resize(m_dirs.count());
+            unionBits.assign(cache.visible.size(), 0);
+            for (size_t w = 0; w < unionBits.size(); ++w) {
+                uint64_t any = 0;
+                for (int k = 0; k < blend.count; ++k) any |= blend.masks[k][w];
+                unionBits[w] = any; // not only visible': a light's shadow-ray entries read it too
+                for (uint64_t bits = unionBits[w]; bits; bits &= bits - 1) {
+                    const size_t b = size_t(__builtin_ctzll(bits));
+                    float sum = 0.0f;
+                    for (int k = 0; k < blend.count; ++k)
+                        if ((blend.masks[k][w] >> b) & 1u) sum += blend.weights[k];
+                    weight[w * 64 + b] = std::min(sum, 1.0f);
+                }
+            }
+            mask = unionBits.data();
+            weights = weight.data();
+        } else if (nearest) {
+            mask = f.field.lookup(origin - sphere.centre);
+        }
         TexelBits cast_;
         if (!mask) { // beyond the outer shell: j covers a few texels, ray-cast them
             fallback[i] = 1;
@@ -177,7 +205,8 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         for (size_t w = 0; w < cache.visible.size() && !blocks; ++w) blocks = (mask[w] & cache.visible[w]) != 0;
         // Nothing of j in view now, nor in the terms the point holds: unchanged.
         if (!blocks && !hitChanged && !f.approximate[i] && !occludedBy(s, j)) return;
-        applyDragMask(cache, mask, sphere, origin, f.envTexels, s);
+        applyDragMask(cache, mask, sphere, origin, f.envTexels, s, std::getenv("SF_RAY") ? &m_occluders[j].bvh : nullptr,
+                      mask == cast_.data() ? nullptr : weights);
         f.approximate[i] = 1;
         touched[i] = 1;
     });

@@ -99,6 +99,7 @@ public:
     // Per point: whether the last applyChanges did any work on it.
     const std::vector<uint8_t>& lastTouched() const { return m_touched; }
     const ShadowField* shadowField() const { return m_field ? &m_field->field : nullptr; }
+    const std::vector<PointDragCache>* dragCaches() const { return m_field ? &m_field->caches : nullptr; }
     const std::vector<glm::vec3>& fieldEnvTexels() const; // L(t) dOmega per texel (tests)
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).

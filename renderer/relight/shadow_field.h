@@ -42,6 +42,16 @@ public:
     // The mask (words() words, maskDirs' texels) at `offset` = point - the object's bounding
     // centre; null beyond the outer shell's reach.
     const uint64_t* lookup(const glm::vec3& offset) const;
+    // The interpolated field (Zhou et al.'s trilinear blend): up to 8 samples — the two shells
+    // about the offset's log radius x the 4 directions about it on the octahedral square
+    // (bilinear, clamped at the square's edges) — and their weights (summing to 1). Exactly on
+    // a sample, that sample alone with weight 1. False beyond the outer shell's reach.
+    struct Blend {
+        const uint64_t* masks[8];
+        float weights[8];
+        int count = 0;
+    };
+    bool blend(const glm::vec3& offset, Blend& out) const;
     // Sample (shell, direction)'s offset from the centre, and its mask.
     glm::vec3 sampleOffset(size_t shell, size_t direction) const;
     const uint64_t* sampleMask(size_t shell, size_t direction) const;
@@ -49,7 +59,10 @@ public:
     size_t shells() const { return m_radii.size(); }
     size_t directions() const { return m_dirs ? m_dirs->count() : 0; }
     size_t words() const { return m_words; }
-    size_t bytes() const { return m_masks.size() * sizeof(uint64_t) + m_radii.size() * sizeof(float); }
+    size_t bytes() const {
+        return m_masks.size() * sizeof(uint64_t) + m_radii.size() * sizeof(float) + m_inside.size();
+    }
+    size_t insideSamples() const;
     const ShadowFieldSettings& settings() const { return m_settings; }
 
 private:
@@ -59,6 +72,9 @@ private:
     float m_logInner = 0.0f, m_logStep = 1.0f, m_reach = 0.0f;
     size_t m_words = 0;
     std::vector<uint64_t> m_masks; // (shell * directions + direction) * words
+    // Per sample: inside the object (its rays hit it in >= 98% of the directions). Reported, not
+    // used: leaving them out of blends made the ring's contact zone worse (relighting.md §7.0d).
+    std::vector<uint8_t> m_inside;
 };
 
 } // namespace wavelit::relight
