@@ -21,7 +21,7 @@
 // --shadow-field: translation drags of the first object the list translates go through its
 // shadow field (relight/shadow_field.h, docs/relighting.md §7.0d; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
-// the bounding radius)): the report's "shadowField" block says what the field and the per-point
+// the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend)): the report's "shadowField" block says what the field and the per-point
 // caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks
 // and cacheMs; --field-check also keeps an exact preview beside it and reports each edit's
 // fieldVsExactRelRMSE (the field's image against the exact, ray-cast one).
@@ -41,7 +41,6 @@
 #include "util/timer.h"
 
 #include <nlohmann/json.hpp>
-#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -100,7 +99,7 @@ int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
                                    "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride",
                                    "--field-shells", "--field-directions", "--field-inner", "--field-outer"},
-                            {"--skip-full-rebuild", "--shadow-field", "--field-check"});
+                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
         return reportError(makeError(ErrorKind::Usage, "", "relight needs exactly one SCENE"));
@@ -124,6 +123,7 @@ int runRelight(const std::vector<std::string>& argv) {
     relight::ShadowFieldSettings fieldSettings;
     fieldSettings.shells = *fieldShells;
     fieldSettings.directionLevel = *fieldDirections;
+    fieldSettings.interpolate = !args->has("--field-nearest");
     for (auto [flag, target] : {std::pair{"--field-inner", &fieldSettings.innerRatio},
                                 std::pair{"--field-outer", &fieldSettings.outerRatio}})
         if (auto v = args->value(flag)) {
@@ -198,6 +198,8 @@ int runRelight(const std::vector<std::string>& argv) {
             const relight::ShadowFieldInfo info = (*preview)->enableShadowField(*object, fieldSettings);
             fieldReport = {{"object", scene.objects[*object].name}, {"shells", fieldSettings.shells},
                            {"directionSide", 1 << fieldSettings.directionLevel},
+                           {"interpolate", fieldSettings.interpolate},
+                           {"insideSamples", (*preview)->shadowField()->insideSamples()},
                            {"innerRatio", fieldSettings.innerRatio}, {"outerRatio", fieldSettings.outerRatio},
                            {"fieldMs", info.fieldMs}, {"fieldBytes", info.fieldBytes}, {"cacheMs", info.cacheMs},
                            {"cachedPoints", info.cachedPoints},
@@ -291,21 +293,6 @@ int runRelight(const std::vector<std::string>& argv) {
         if (exact) {
             exact->applyChanges(scene, edit.changes);
             e["fieldVsExactRelRMSE"] = relight::relativeRmse(image, exact->image(*width, *height));
-            if (std::getenv("SF_DEBUG")) { // temporary: error by distance bands from the object
-                const util::ImageRGB ex = exact->image();
-                const util::ImageRGB fi = (*preview)->image();
-                const auto ctx = (*preview)->context();
-                const relight::BoundingSphere b = (*ctx.occluders)[0].bounds;
-                double band[6] = {0}; size_t n[6] = {0};
-                for (size_t i = 0; i < ex.pixels.size(); ++i) {
-                    const auto& p = (*preview)->points()[i];
-                    double dd = 0; for (int c = 0; c < 3; ++c) { const double r = ex.pixels[i][c], d = fi.pixels[i][c] - r; dd += d * d / (r * r + 1e-2); }
-                    const double q = p.hit ? glm::length(p.position - b.centre) / b.radius : 99.0;
-                    const int k = !p.hit ? 5 : p.object == 0 ? 4 : q < 0.5 ? 0 : q < 1.0 ? 1 : q < 2.0 ? 2 : 3;
-                    band[k] += dd; n[k]++;
-                }
-                for (int k = 0; k < 6; ++k) std::printf("band %d: n %zu share %.4f\n", k, n[k], band[k] / (3.0 * double(ex.pixels.size())));
-            }
         }
         e["maxRelDiffVsFullRebuild"] = skipFull ? nlohmann::ordered_json(nullptr)
                                                 : nlohmann::ordered_json(maxRelativeDifference((*preview)->image(), (*scratch)->image()));

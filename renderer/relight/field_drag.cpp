@@ -9,7 +9,6 @@
 #include "wavelet/haar.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace wavelit::relight {
 namespace {
@@ -136,7 +135,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     TransferContext ctxWithout = ctx;
     ctxWithout.sceneBvh = &f.bvhWithout;
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
-    const bool nearest = std::getenv("SF_NEAREST") != nullptr;
+    const bool nearest = !f.field.settings().interpolate;
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
@@ -205,8 +204,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         for (size_t w = 0; w < cache.visible.size() && !blocks; ++w) blocks = (mask[w] & cache.visible[w]) != 0;
         // Nothing of j in view now, nor in the terms the point holds: unchanged.
         if (!blocks && !hitChanged && !f.approximate[i] && !occludedBy(s, j)) return;
-        applyDragMask(cache, mask, sphere, origin, f.envTexels, s, std::getenv("SF_RAY") ? &m_occluders[j].bvh : nullptr,
-                      mask == cast_.data() ? nullptr : weights);
+        applyDragMask(cache, mask, sphere, origin, f.envTexels, s, nullptr, mask == cast_.data() ? nullptr : weights);
         f.approximate[i] = 1;
         touched[i] = 1;
     });

@@ -31,6 +31,7 @@ struct ShadowFieldSettings {
     int directionLevel = 5; // 2^l x 2^l sample directions per shell
     float innerRatio = 0.25f; // innermost shell radius / bounding radius
     float outerRatio = 24.0f; // outermost shell radius / bounding radius
+    bool interpolate = true;  // blend() the 8 samples about a point; false: the nearest (lookup)
 };
 
 class ShadowField {
