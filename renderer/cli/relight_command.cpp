@@ -289,6 +289,7 @@ int runRelight(const std::vector<std::string>& argv) {
             e["pointsRebuilt"] = summary.pointsRebuilt;
             e["fieldFallbacks"] = summary.fieldFallbacks;
             e["cacheMs"] = summary.cacheMs;
+            e["rebuiltCpuMs"] = summary.rebuiltCpuMs; // of incrementalCpuMs: the hit-changed points
         }
         if (exact) {
             exact->applyChanges(scene, edit.changes);

@@ -9,9 +9,17 @@
 #include "wavelet/haar.h"
 
 #include <algorithm>
+#include <atomic>
+#include <ctime>
 
 namespace wavelit::relight {
 namespace {
+
+int64_t threadCpuNs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return int64_t(t.tv_sec) * 1000000000 + int64_t(t.tv_nsec);
+}
 
 bool occludedBy(const PointState& s, size_t object) {
     for (const Occlusion& o : s.occlusions)
@@ -136,6 +144,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     ctxWithout.sceneBvh = &f.bvhWithout;
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     const bool nearest = !f.field.settings().interpolate;
+    std::atomic<int64_t> rebuiltNs{0}; // CPU time of the points whose camera hit changed
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
@@ -143,6 +152,12 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         PointDragCache& cache = f.caches[i];
         const bool hitChanged = !(cast[i] == p);
         if (hitChanged) {
+            const int64_t start = threadCpuNs();
+            struct Charge { // the hit-changed branch's CPU time, on every way out of it
+                std::atomic<int64_t>& sum;
+                int64_t start;
+                ~Charge() { sum += threadCpuNs() - start; }
+            } charge{rebuiltNs, start};
             p = cast[i];
             touched[i] = 1;
             for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
@@ -211,6 +226,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
     summary.pointsRebuilt = size_t(std::count(rebuilt.begin(), rebuilt.end(), uint8_t(1)));
     summary.fieldFallbacks = size_t(std::count(fallback.begin(), fallback.end(), uint8_t(1)));
+    summary.rebuiltCpuMs = double(rebuiltNs.load()) * 1e-6;
     summary.pointsMs = timer.milliseconds();
     m_touched = std::move(touched);
     return summary;

@@ -60,6 +60,7 @@ struct EditSummary {
     size_t pointsRebuilt = 0;
     size_t fieldFallbacks = 0;
     double cacheMs = 0.0;
+    double rebuiltCpuMs = 0.0; // CPU time (all workers) of the points whose camera hit changed
 };
 
 // What enableShadowField built: the field (time, bytes) and the per-point drag caches.
