@@ -8,7 +8,10 @@
 #include "util/timer.h"
 #include "wavelet/haar.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <ctime>
 
@@ -27,7 +30,33 @@ bool occludedBy(const PointState& s, size_t object) {
     return false;
 }
 
+int64_t cellKey(const glm::vec3& offset, float cell, int dx = 0, int dy = 0, int dz = 0) {
+    const int64_t x = int64_t(std::floor(offset.x / cell)) + dx, y = int64_t(std::floor(offset.y / cell)) + dy,
+                  z = int64_t(std::floor(offset.z / cell)) + dz;
+    return (x & 0x1fffff) | ((y & 0x1fffff) << 21) | ((z & 0x1fffff) << 42);
+}
+
 } // namespace
+
+const TexelBits* RelightPreview::FieldDrag::nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const {
+    const TexelBits* best = nullptr;
+    float bestDistance = 2.0f * cell * cell; // within about one cell
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                auto it = ownGrid.find(cellKey(offset, cell, dx, dy, dz));
+                if (it == ownGrid.end()) continue;
+                for (uint32_t k : it->second) {
+                    const glm::vec3 d = ownOffset[k] - offset;
+                    const float d2 = glm::dot(d, d);
+                    if (d2 < bestDistance && glm::dot(ownNormal[k], normal) > 0.9f) {
+                        bestDistance = d2;
+                        best = &ownSelf[k];
+                    }
+                }
+            }
+    return best;
+}
 
 ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFieldSettings& settings) {
     ShadowFieldInfo info;
@@ -87,6 +116,27 @@ void RelightPreview::buildDragCaches() {
     TransferContext ctxWithout = ctx;
     ctxWithout.sceneBvh = &f.bvhWithout;
     f.caches.assign(m_points.size(), PointDragCache{});
+    // The object's own points (their self-visibility, for the points the drag brings into view).
+    const ObjectOccluder& own = m_occluders[f.object];
+    f.centre = own.bounds.centre;
+    f.ownOffset.clear();
+    f.ownNormal.clear();
+    f.ownSelf.clear();
+    f.ownGrid.clear();
+    if (!(own.convexFront && own.convexBack)) {
+        for (size_t i = 0; i < m_points.size(); ++i) {
+            const PreviewPoint& p = m_points[i];
+            if (!p.hit || p.object != f.object) continue;
+            TexelBits self = m_states[i].above;
+            for (size_t w = 0; w < self.size(); ++w) self[w] &= ~m_states[i].lit[w];
+            f.ownOffset.push_back(rayOrigin(p) - f.centre);
+            f.ownNormal.push_back(p.geometric);
+            f.ownSelf.push_back(std::move(self));
+        }
+        // Cells of ~2 point spacings: the points cover the visible surface about evenly.
+        f.cell = std::max(1e-4f, 4.0f * own.bounds.radius / std::sqrt(float(std::max<size_t>(f.ownOffset.size(), 1))));
+        for (uint32_t k = 0; k < f.ownOffset.size(); ++k) f.ownGrid[cellKey(f.ownOffset[k], f.cell)].push_back(k);
+    }
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         const PreviewPoint& p = m_points[i];
         if (!p.hit || p.object == f.object) return;
@@ -168,8 +218,10 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
                 m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
                 return;
             }
-            if (p.object == j) { // the object's own surface: exact, with its rays
-                s = buildPointState(ctx, p);
+            if (p.object == j) { // the object's own surface: its factors, self-visibility cached
+                // Its offset from the object's centre now, as the cached points' from the centre then.
+                const glm::vec3 offset = rayOrigin(p) - sphere.centre;
+                s = buildPointState(ctx, p, UINT32_MAX, f.ownGrid.empty() ? nullptr : f.nearestSelf(offset, p.geometric));
                 rebuilt[i] = 1;
                 return;
             }

@@ -399,7 +399,8 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::ve
     return white;
 }
 
-PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject) {
+PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,
+                           const TexelBits* selfBlocked) {
     PointState s;
     const TexelDirections& dirs = *ctx.dirs;
     TexelBits above = makeBits(dirs.count());
@@ -409,7 +410,9 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, ui
     const glm::vec3 origin = rayOrigin(p);
     const ObjectOccluder& own = (*ctx.occluders)[p.object];
     const bool convex = p.backFace ? own.convexBack : own.convexFront;
-    const TexelBits self = convex ? makeBits(dirs.count()) : castOcclusion(own, origin, dirs, above);
+    TexelBits self = convex ? makeBits(dirs.count()) : selfBlocked ? *selfBlocked : castOcclusion(own, origin, dirs, above);
+    if (selfBlocked && !convex)
+        for (size_t w = 0; w < self.size(); ++w) self[w] &= above[w];
     s.above = above;
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];

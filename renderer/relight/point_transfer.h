@@ -101,8 +101,11 @@ glm::vec3 rayOrigin(const PreviewPoint& p);
 // Everything: self-visibility, every object's occlusion, T, the environment and light terms
 // (every object but `skipObject`: the shadow field's drag leaves the dragged object out, then
 // adds it from the field, drag_cache.h).
+// `selfBlocked`, when given, stands for the self-visibility rays of a non-convex object (the
+// texels its own object blocks, masked by the point's horizon): the shadow-field drag's own
+// surface cache (relight_preview.h).
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p,
-                           uint32_t skipObject = UINT32_MAX);
+                           uint32_t skipObject = UINT32_MAX, const TexelBits* selfBlocked = nullptr);
 // Re-casts object j's occlusion over the lit texels its bounding cone may cover and
 // stores it when anything is blocked (never for the point's own object: that is Õ1).
 void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j);

@@ -34,6 +34,7 @@
 
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace wavelit::relight {
@@ -154,6 +155,16 @@ private:
         std::vector<PointDragCache> caches; // per point; invalid for misses and the object's own
         bool cachesValid = false;
         std::vector<uint8_t> approximate;   // per point: terms from the field (O_j and T stale)
+        // The object's own surface points at the drag's start, in its frame (offset from its
+        // bounding centre then), with the texels the object blocks for them (above & ~lit):
+        // self-visibility is translation-invariant, so a point the drag brings into view takes
+        // the nearest one's instead of its rays (non-convex objects only; an approximation).
+        glm::vec3 centre{0.0f};
+        float cell = 1.0f;
+        std::vector<glm::vec3> ownOffset, ownNormal;
+        std::vector<TexelBits> ownSelf;
+        std::unordered_map<int64_t, std::vector<uint32_t>> ownGrid;
+        const TexelBits* nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const;
     };
     std::unique_ptr<FieldDrag> m_field;
     bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;
