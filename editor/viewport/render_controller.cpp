@@ -74,6 +74,7 @@ void RenderController::submit(RenderJob job) {
     job.options.validation = m_settings.validation;
     job.options.lightGroups = m_settings.lightMix;
     m_latest = RenderFrame{};
+    m_latestPreview = RenderFrame{};
     if (!job.changes) { // a new scene: nothing of the old one stays
         m_displayed = RenderFrame{};
         m_sceneGeneration = job.generation;
@@ -142,6 +143,7 @@ void RenderController::onFrame(RenderFrame frame) {
 void RenderController::onRelightFrame(RenderFrame frame) {
     if (m_shared->cancel.load() || frame.generation > m_generation) return;
     m_relightFollows = true;
+    if (frame.generation == m_generation) m_latestPreview = frame;
     // A preview of a generation the full-size tracer has already shown is never better (it
     // handed over); it is better than a draft of it.
     if (frame.generation == m_displayed.generation && m_displayed.kind == RenderFrame::Kind::PathTraced &&
