@@ -160,8 +160,8 @@ void RelightWorker::rebuild() {
     if (!created) return; // the path tracer shows the scene (and reports real problems)
     m_preview = std::move(created.value());
     m_previewGeneration = m_latestGeneration;
-    publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms (%2 points, %3; coarse "
-                                               "first answer +%4)")
+    publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms (%2 points, %3; coarse-to-fine "
+                                               "+%4)")
                                     .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0)
                                     .arg(m_preview->fine().points().size())
                                     .arg(kiB(m_preview->fine().stateBytes()))
