@@ -93,10 +93,18 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
         sendMouse(viewport, QEvent::MouseMove, from + QPointF(1.5 * i, 0.5 * i), Qt::NoButton, Qt::LeftButton);
         QVERIFY2(renderer->generation() > before, "the move made no edit");
         const quint64 generation = renderer->generation();
-        QTRY_VERIFY_WITH_TIMEOUT(renderer->displayedFrame().generation == generation &&
-                                     renderer->displayedFrame().kind == RenderFrame::Kind::Relight,
-                                 kTimeoutMs);
+        const bool arrived = QTest::qWaitFor(
+            [&] {
+                return renderer->displayedFrame().generation == generation &&
+                       renderer->displayedFrame().kind == RenderFrame::Kind::Relight;
+            },
+            kTimeoutMs);
         const RenderFrame& shown = renderer->displayedFrame();
+        QVERIFY2(arrived, qPrintable(QString("drag frame %1 (generation %2): shown is kind %3 of generation %4 (%5); "
+                                             "the newest preview is of generation %6 (%7)")
+                                         .arg(i).arg(generation).arg(int(shown.kind)).arg(shown.generation)
+                                         .arg(shown.lastUpdate).arg(renderer->latestPreview().generation)
+                                         .arg(renderer->latestPreview().lastUpdate)));
         qInfo("drag frame %d: %s (%.0f ms after the edit)", i, qPrintable(shown.lastUpdate), shown.msSinceEdit);
         QVERIFY2(shown.approximate, qPrintable(shown.lastUpdate));
         QVERIFY(shown.image && shown.image->width == kSize && shown.image->height == kSize);
