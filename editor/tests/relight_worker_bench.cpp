@@ -3,8 +3,8 @@
 // against older workers for before/after tables (docs/relighting.md §7.0d). No render thread
 // runs, so the process's CPU time between a job's submission and the worker's answer is the
 // worker's (its thread and the preview's parallelFor threads).
-//   relight_worker_bench SCENE [SIZE = 512] [STEPS = 8]
-// Drags the first object along +X (5 cm per frame), pauses, then steps the first glossy
+//   relight_worker_bench SCENE [SIZE = 512] [STEPS = 8] [OBJECT = the first]
+// Drags the object along +X (5 cm per frame), pauses, then steps the first glossy
 // material's roughness (+0.05 per frame), pauses; prints one line per job: what came back
 // (first answer / exact preview / skipped), wall ms, CPU ms; and the resident memory the build
 // added.
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     qRegisterMetaType<RenderFrame>();
     if (argc < 2) {
-        std::fprintf(stderr, "usage: relight_worker_bench SCENE [SIZE] [STEPS]\n");
+        std::fprintf(stderr, "usage: relight_worker_bench SCENE [SIZE] [STEPS] [OBJECT]\n");
         return 2;
     }
     const std::string path = argv[1];
@@ -134,18 +134,21 @@ int main(int argc, char** argv) {
                     double(wall.nsecsElapsed()) * 1e-6, cpuMs() - cpu0, qPrintable(last.what));
     };
 
-    const scene::EntityRef object{scene::EntityKind::Object, scene.objects.at(0).id};
+    size_t dragged = 0;
+    for (size_t i = 0; argc > 4 && i < scene.objects.size(); ++i)
+        if (scene.objects[i].name == argv[4]) dragged = i;
+    const scene::EntityRef object{scene::EntityKind::Object, scene.objects.at(dragged).id};
     scene::EntityRef material{scene::EntityKind::Material, scene.materials.at(0).id};
     for (const scene::Material& m : scene.materials)
         if (m.brdf != "lambert") { material.id = m.id; break; }
-    std::printf("%s at %dx%d; object %s, material %s\n", path.c_str(), size, size, scene.objects.at(0).name.c_str(),
+    std::printf("%s at %dx%d; object %s, material %s\n", path.c_str(), size, size, scene.objects.at(dragged).name.c_str(),
                 scene.materials.at(size_t(std::find_if(scene.materials.begin(), scene.materials.end(),
                                                        [&](const scene::Material& m) { return m.id == material.id; }) -
                                           scene.materials.begin())).name.c_str());
     const double rss0 = rssMiB();
     submit(std::nullopt); // the scene opened
     timed("open", 0, [] {});
-    const glm::vec3 t0 = scene.objects.at(0).transform.translation;
+    const glm::vec3 t0 = scene.objects.at(dragged).transform.translation;
     timed("edit", 0, [&] { edit(object, "translation", t0 + glm::vec3(0.01f, 0.0f, 0.0f)); });
     pause("build");
     std::printf("resident memory: %.1f MiB before the build, %.1f MiB after (+%.1f)\n", rss0, rssMiB(), rssMiB() - rss0);
