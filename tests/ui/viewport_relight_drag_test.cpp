@@ -140,6 +140,34 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
                              kTimeoutMs);
     QVERIFY2(window.errors()->count() == 0, qPrintable(window.errors()->lastMessage()));
     QCOMPARE(renderer->latestFrame().validationMessages, 0);
+
+    // A roughness edit (the property panel's path: no drag) takes the same route: a first answer
+    // (reported, not asserted: the tracer may hand over first), then the exact preview.
+    int approximateShown = 0;
+    const auto counter = connect(renderer, &RenderController::displayFrame, this, [&](const RenderFrame& f) {
+        approximateShown += f.kind == RenderFrame::Kind::Relight && f.approximate;
+    });
+    const scene::EntityRef gold{scene::EntityKind::Material, window.document()->scene()->materials.at(0).id};
+    QVERIFY(window.document()->apply({gold, "roughness", 0.35f}));
+    const quint64 roughnessEdit = renderer->generation();
+    QTRY_VERIFY_WITH_TIMEOUT(renderer->latestPreview().generation == roughnessEdit && renderer->latestPreview().image &&
+                                 !renderer->latestPreview().approximate,
+                             kTimeoutMs);
+    disconnect(counter);
+    qInfo("roughness edit: %d approximate frame(s) shown; %s", approximateShown,
+          qPrintable(renderer->latestPreview().lastUpdate));
+    const scene::Scene& rougher = *window.document()->scene();
+    auto scratch2 = relight::RelightPreview::create(rougher, RelightWorker::previewSettings(rougher, kSize, kSize));
+    QVERIFY(scratch2);
+    const double diff2 = maxRelativeDifference(*renderer->latestPreview().image, (*scratch2)->image(kSize, kSize));
+    qInfo("exact preview after the roughness edit vs from scratch: max relative difference %.3g", diff2);
+    QVERIFY(diff2 <= 1e-6);
+    QTRY_VERIFY_WITH_TIMEOUT((renderer->latestFrame().generation == roughnessEdit &&
+                              renderer->latestFrame().samplesPerPixel >= 1) ||
+                                 window.errors()->count() > 0,
+                             kTimeoutMs);
+    QVERIFY2(window.errors()->count() == 0, qPrintable(window.errors()->lastMessage()));
+    QCOMPARE(renderer->latestFrame().validationMessages, 0);
 }
 
 QTEST_MAIN(ViewportRelightDragTest)
