@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The shadow-field drag's A/B of docs/relighting.md §7.0d: the ring (ring_on_ground) and small_box
+# The shadow-field drag's A/B of docs/relighting.md §7.0e: the ring (ring_on_ground) and small_box
 # (cornell_box) translation drags, BEFORE_CLI with today's exact drag, AFTER_CLI with
 # --shadow-field --field-check, A B A B RUNS times at PREVIEW^2 (default 256) on 2 threads; prints
 # the median incrementalCpuMs / incrementalMs per scene and binary and the field's relRMSE against

@@ -16,6 +16,9 @@ QString RenderStatusLabel::format(const RenderFrame& frame, const QString& sampl
     if (!sampler.isEmpty()) text += QStringLiteral(" · ") + sampler;
     if (noise) text += tr(" · noise ≈ %1%").arg(*noise * 100.0, 0, 'f', *noise < 0.1 ? 2 : 1);
     if (!frame.deviceName.isEmpty()) text += QStringLiteral(" · ") + frame.deviceName;
+    // Which preview is on screen: a drag's approximate first answer or the exact one after it.
+    if (frame.kind == RenderFrame::Kind::Relight)
+        text += frame.approximate ? tr(" · approximate first answer") : tr(" · exact preview");
     // What the last edit cost (architecture.md §5.B): a light drag should read "uploaded: lights".
     if (!frame.lastUpdate.isEmpty()) text += QStringLiteral(" — ") + frame.lastUpdate;
     return text;

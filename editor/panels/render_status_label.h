@@ -2,8 +2,9 @@
 //   "12 spp · 3.4 s · 0.9 Msamples/s · wavelet · noise ≈ 4.1% · llvmpipe — uploaded: lights"
 // samples per pixel, render time since the last restart, samples (paths) per second, the
 // direction sampler, the estimated relative RMS noise of the image (panels/noise_estimate.h:
-// from two frames with disjoint samples; shown once one exists), the device, and what the last
-// scene update rebuilt and uploaded (RenderFrame::lastUpdate).
+// from two frames with disjoint samples; shown once one exists), the device, for a relighting
+// preview whether it is the approximate first answer of a drag or the exact preview, and what
+// the last scene update rebuilt and uploaded (RenderFrame::lastUpdate).
 #pragma once
 
 #include "panels/noise_estimate.h"

@@ -153,6 +153,7 @@ QJSValue AppApi::waitForFrame(double timeoutSeconds) {
     out.setProperty("spp", frame.samplesPerPixel);
     out.setProperty("kind", frameKindName(frame.kind));
     out.setProperty("source", frameSourceName(frame.kind));
+    out.setProperty("approximate", frame.approximate);
     out.setProperty("msSinceEdit", frame.msSinceEdit);
     out.setProperty("estimatedRelError", frame.estimatedRelError);
     return out;

@@ -5,37 +5,38 @@
 
 #include "relight/sphere_level.h"
 
+#include <QElapsedTimer>
+
 #include <algorithm>
 
 namespace wavelit::editor {
 namespace {
 
-enum class Handling { Apply, Budgeted, Rebuild };
+enum class Handling { Exact, FirstAnswer, Rebuild };
 
-// What the preview does with an edit (relight_preview.h: what each edit rebuilds).
+// What the preview does with an edit (header; docs/relighting.md §3 says what each edit costs).
 Handling handlingOf(const scene::ChangeSet& changes) {
-    if (changes.changeKind() == scene::ChangeKind::Rebuild) return Handling::Rebuild;
-    Handling handling = Handling::Apply;
-    for (const scene::Invalidation& inv : changes.invalidations()) {
-        switch (inv.factor) {
-        case scene::FactorKind::Camera: return Handling::Rebuild;
-        case scene::FactorKind::ObjectGeometry:
-        case scene::FactorKind::ObjectMaterial:
-        case scene::FactorKind::MaterialBrdf: handling = Handling::Budgeted; break;
-        default: break;
+    Handling handling = Handling::Exact;
+    for (const scene::Edit& edit : changes.edits()) {
+        const auto* p = std::get_if<scene::PropertyEdit>(&edit);
+        if (!p) return Handling::Rebuild; // entities added or removed: everything changes
+        switch (p->entity.kind) {
+        case scene::EntityKind::Camera:
+        case scene::EntityKind::Render: return Handling::Rebuild; // every point, or another size
+        case scene::EntityKind::Object:
+            if (p->property == "mesh") return Handling::Rebuild; // loaded on the render thread
+            if (p->property != "name") handling = Handling::FirstAnswer;
+            break;
+        case scene::EntityKind::Material:
+            // Colour and emission are mixed in when the image is summed (no per-point work for
+            // the linear and affine BRDFs of plugins/): exact at once, like a light's power.
+            if (p->property != "baseColor" && p->property != "emission" && p->property != "name")
+                handling = Handling::FirstAnswer;
+            break;
+        default: break; // environment, lights: the full update is tens of ms (§7.0a)
         }
     }
-    for (const scene::Edit& edit : changes.edits())
-        if (const auto* p = std::get_if<scene::PropertyEdit>(&edit))
-            if (p->entity.kind == scene::EntityKind::Render) return Handling::Rebuild;
     return handling;
-}
-
-// The EditSummary kind an edit of this handling will report, for the per-kind budget.
-std::string budgetKind(const scene::ChangeSet& changes) {
-    for (const scene::Invalidation& inv : changes.invalidations())
-        if (inv.factor == scene::FactorKind::ObjectGeometry) return "object";
-    return "material";
 }
 
 bool assetsLoaded(const scene::Scene& scene) {
@@ -44,13 +45,29 @@ bool assetsLoaded(const scene::Scene& scene) {
     return scene.lighting.environment.path.empty() || scene.lighting.environment.image;
 }
 
+QString kiB(size_t bytes) { return QString::number(double(bytes) / 1024.0, 'f', 0) + QStringLiteral(" KiB"); }
+
 } // namespace
+
+relight::RelightSettings RelightWorker::previewSettings(const scene::Scene& scene, int width, int height) {
+    relight::RelightSettings settings;
+    // One point per render pixel up to kMaxPreviewPoints per side, the aspect kept.
+    const double shrink = std::min(1.0, double(kMaxPreviewPoints) / double(std::max(width, height)));
+    settings.width = std::max(1, int(double(width) * shrink + 0.5));
+    settings.height = std::max(1, int(double(height) * shrink + 0.5));
+    settings.level = relight::chooseSphereLevel(scene).level;
+    return settings;
+}
 
 RelightWorker::RelightWorker(std::shared_ptr<RenderShared> shared) : m_shared(std::move(shared)) {
     m_rebuildTimer = new QTimer(this);
     m_rebuildTimer->setSingleShot(true);
     m_rebuildTimer->setInterval(kRebuildQuietMs);
     connect(m_rebuildTimer, &QTimer::timeout, this, &RelightWorker::rebuild);
+    m_fineTimer = new QTimer(this);
+    m_fineTimer->setSingleShot(true);
+    m_fineTimer->setInterval(kFinePauseMs);
+    connect(m_fineTimer, &QTimer::timeout, this, &RelightWorker::refine);
 }
 
 RelightWorker::~RelightWorker() = default;
@@ -78,6 +95,13 @@ void RelightWorker::submit(RenderJob job) {
     });
 }
 
+void RelightWorker::drop(quint64 generation) {
+    m_preview.reset();
+    m_previewGeneration = 0;
+    m_fineTimer->stop();
+    emit skipped(generation);
+}
+
 void RelightWorker::step() {
     if (cancelled() || !m_pending) return;
     RenderJob job = std::move(*m_pending);
@@ -87,73 +111,69 @@ void RelightWorker::step() {
     m_width = job.options.width;
     m_height = job.options.height;
     if (!job.scene || !assetsLoaded(*job.scene) || job.options.width <= 0 || job.options.height <= 0) {
-        m_preview.reset(); // nothing to preview (the render thread loads dropped assets)
-        m_previewGeneration = 0;
-        emit skipped(job.generation);
+        drop(job.generation); // nothing to preview (the render thread loads dropped assets)
         return;
     }
     const bool chained = m_preview && job.changes && m_previewGeneration == job.baseGeneration;
-    if (!chained) { // a newly opened scene, or an edit after the preview was dropped
-        m_preview.reset();
-        m_previewGeneration = 0;
+    const Handling handling = chained ? handlingOf(*job.changes) : Handling::Rebuild;
+    if (handling == Handling::Rebuild) {
+        drop(job.generation);
         // Built once edits pause, never for a scene just opened: the path tracer's first frames
         // show it, and a build (seconds) would hold up quitting (shutdown waits for it).
         if (job.changes) m_rebuildTimer->start();
-        emit skipped(job.generation);
-        return;
-    }
-    const Handling handling = handlingOf(*job.changes);
-    if (handling == Handling::Budgeted) {
-        const auto cost = m_lastCostMs.find(budgetKind(*job.changes));
-        if (cost != m_lastCostMs.end() && cost->second > kEditBudgetMs) {
-            m_preview.reset(); // too slow to follow a drag: rebuilt when it ends
-            m_previewGeneration = 0;
-            m_rebuildTimer->start();
-            emit skipped(job.generation);
-            return;
-        }
-    }
-    if (handling == Handling::Rebuild) {
-        m_preview.reset();
-        m_previewGeneration = 0;
-        m_rebuildTimer->start();
-        emit skipped(job.generation);
         return;
     }
     QElapsedTimer timer;
     timer.start();
-    const relight::EditSummary summary = m_preview->applyChanges(*job.scene, *job.changes);
-    const double ms = double(timer.nsecsElapsed()) * 1e-6;
-    m_lastCostMs[summary.kind] = ms;
+    const relight::EditSummary summary = m_preview->applyCoarse(*job.scene, *job.changes);
+    if (handling == Handling::Exact) m_preview->applyFine(); // with any first-answer edits pending
     m_previewGeneration = job.generation;
-    publish(job.generation, QStringLiteral("relight preview: %1, %2 points in %3 ms")
+    const bool first = m_preview->finePending();
+    publish(job.generation, QStringLiteral("relight %1: %2, %3 points in %4 ms")
+                                .arg(first ? QStringLiteral("first answer") : QStringLiteral("preview"))
                                 .arg(QString::fromStdString(summary.kind))
                                 .arg(summary.pointsTouched)
-                                .arg(ms, 0, 'f', 1));
+                                .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 1));
+    if (first) m_fineTimer->start(); // restarted by every drag frame: fires once the drag pauses
+    else m_fineTimer->stop();
+}
+
+void RelightWorker::refine() {
+    // A job waiting to run restarts the timer when it has (a drag goes on).
+    if (cancelled() || m_pending || !m_preview || !m_preview->finePending()) return;
+    QElapsedTimer timer;
+    timer.start();
+    const relight::EditSummary summary = m_preview->applyFine();
+    publish(m_previewGeneration, QStringLiteral("relight preview after the pause: %1, %2 points in %3 ms")
+                                     .arg(QString::fromStdString(summary.kind))
+                                     .arg(summary.pointsTouched)
+                                     .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0));
 }
 
 void RelightWorker::rebuild() {
     if (cancelled() || !m_latestScene || m_pending) return; // a pending job calls back here
-    relight::RelightSettings settings;
-    // One point per render pixel up to kMaxPreviewPoints per side, the aspect kept.
-    const double shrink = std::min(1.0, double(kMaxPreviewPoints) / double(std::max(m_width, m_height)));
-    settings.width = std::max(1, int(double(m_width) * shrink + 0.5));
-    settings.height = std::max(1, int(double(m_height) * shrink + 0.5));
-    settings.level = relight::chooseSphereLevel(*m_latestScene).level;
     QElapsedTimer timer;
     timer.start();
-    auto created = relight::RelightPreview::create(*m_latestScene, settings);
+    auto created = relight::CoarseToFinePreview::create(*m_latestScene,
+                                                        previewSettings(*m_latestScene, m_width, m_height),
+                                                        -1, kCoarseStride, /*deferMovedObjects=*/true);
     if (!created) return; // the path tracer shows the scene (and reports real problems)
     m_preview = std::move(created.value());
     m_previewGeneration = m_latestGeneration;
-    publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms")
-                                    .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0));
+    publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms (%2 points, %3; coarse-to-fine "
+                                               "+%4)")
+                                    .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0)
+                                    .arg(m_preview->fine().points().size())
+                                    .arg(kiB(m_preview->fine().stateBytes()))
+                                    .arg(kiB(m_preview->extraBytes())));
 }
 
 void RelightWorker::publish(quint64 generation, const QString& what) {
     RenderFrame frame;
     frame.kind = RenderFrame::Kind::Relight;
-    frame.image = std::make_shared<const util::ImageRGB>(m_preview->image(m_width, m_height));
+    frame.approximate = m_preview->finePending();
+    frame.image = std::make_shared<const util::ImageRGB>(frame.approximate ? m_preview->firstAnswer(m_width, m_height)
+                                                                           : m_preview->image(m_width, m_height));
     frame.displayExposureEv = m_shared->exposureEv.load();
     frame.display = toneMap(*frame.image, frame.displayExposureEv);
     frame.generation = generation;

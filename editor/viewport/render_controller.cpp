@@ -74,6 +74,7 @@ void RenderController::submit(RenderJob job) {
     job.options.validation = m_settings.validation;
     job.options.lightGroups = m_settings.lightMix;
     m_latest = RenderFrame{};
+    m_latestPreview = RenderFrame{};
     if (!job.changes) { // a new scene: nothing of the old one stays
         m_displayed = RenderFrame{};
         m_sceneGeneration = job.generation;
@@ -142,10 +143,15 @@ void RenderController::onFrame(RenderFrame frame) {
 void RenderController::onRelightFrame(RenderFrame frame) {
     if (m_shared->cancel.load() || frame.generation > m_generation) return;
     m_relightFollows = true;
-    // A preview of a generation the full-size tracer has already shown is never better (it
-    // handed over); it is better than a draft of it.
+    if (frame.generation == m_generation) m_latestPreview = frame;
+    // A preview of a generation the full-size tracer has handed over to (its estimated error is
+    // as good, or it stopped) is never better; it is better than a draft of it, and than a
+    // tracer frame that merely came first (during a held drag the render thread goes to full
+    // size after kDraftMaxSpp draft samples, and its first frame can beat a first answer).
+    const bool handedOver = m_displayed.last ||
+                            (m_displayed.estimatedRelError >= 0.0 && m_displayed.estimatedRelError <= kPreviewRelError);
     if (frame.generation == m_displayed.generation && m_displayed.kind == RenderFrame::Kind::PathTraced &&
-        m_displayed.image)
+        m_displayed.image && handedOver)
         return;
     display(std::move(frame));
 }

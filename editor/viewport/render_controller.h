@@ -9,9 +9,10 @@
 //
 // What the viewport shows (displayFrame, docs/relighting.md §6): a second thread runs the
 // relighting preview (relight_worker.h) on the same jobs. Of the frames both threads deliver the
-// newest generation is shown; within one generation the preview stays until the path tracer's
-// estimated error (RenderFrame::estimatedRelError, from its own samples) drops to
-// kPreviewRelError — the preview's measured relRMSE against converged direct lighting on the
+// newest generation is shown (a drag's approximate first answer is replaced by the exact
+// preview of the same generation once the drag pauses); within one generation the preview stays
+// until the path tracer's estimated error (RenderFrame::estimatedRelError, from its own
+// samples) drops to kPreviewRelError — the preview's measured relRMSE against converged direct lighting on the
 // bundled scenes is 0.12-0.34 (docs/relighting.md §7), so 0.2 is where the tracer's image is as
 // good — or the tracer stops (--max-spp). frameReady keeps meaning "a path-traced frame of the
 // newest job" (latestFrame, waitForSamples, saveImage).
@@ -96,6 +97,9 @@ public:
 
     const RenderSettings& settings() const { return m_settings; }
     const RenderFrame& latestFrame() const { return m_latest; }
+    // The newest relighting preview frame of the newest job, shown or not (empty until one came):
+    // during a drag the approximate first answers, once it pauses the exact preview.
+    const RenderFrame& latestPreview() const { return m_latestPreview; }
     // The frame the viewport shows now (any kind; msSinceEdit set), and whether it is of the
     // newest job (an edit's first frame has arrived).
     const RenderFrame& displayedFrame() const { return m_displayed; }
@@ -118,6 +122,7 @@ private:
     QThread m_relightThread;
     RelightWorker* m_relight = nullptr;
     RenderFrame m_displayed;
+    RenderFrame m_latestPreview;
     quint64 m_sceneGeneration = 0; // the job that opened the current scene
     int m_framesDisplayed = 0;
     QElapsedTimer m_sinceEdit;

@@ -45,6 +45,10 @@ struct RenderFrame {
     // last two as kind "preview" (docs/scripting.md, app.waitForFrame).
     enum class Kind { PathTraced, Draft, Relight };
     Kind kind = Kind::PathTraced;
+    // A relighting preview's corrected first answer during a drag (relight_worker.h): an
+    // approximation of the exact preview that follows once the drag pauses (docs/relighting.md
+    // §7.0c); false for the exact preview and every path-traced frame.
+    bool approximate = false;
     std::shared_ptr<const util::ImageRGB> image;
     QImage display;               // toneMap(*image, displayExposureEv); null without an image
     float displayExposureEv = 0.0f;

@@ -19,7 +19,7 @@
 // own points, + the correction), firstImageMs, and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE
 // against this edit's exact preview (the coarse image with those points stale).
 // --shadow-field: translation drags of the first object the list translates go through its
-// shadow field (relight/shadow_field.h, docs/relighting.md §7.0d; --field-shells N,
+// shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
 // the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend)): the report's "shadowField" block says what the field and the per-point
 // caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks

@@ -71,6 +71,14 @@ util::ImageRGB CoarseToFinePreview::firstAnswer(int width, int height) const {
     return correctedFirstAnswer(m_base, *m_coarse, width, height);
 }
 
+size_t CoarseToFinePreview::extraBytes() const {
+    auto imageBytes = [](const util::ImageRGB& image) { return image.pixels.size() * sizeof(glm::vec3); };
+    const size_t pointBytes = sizeof(PreviewPoint);
+    return m_coarse->stateBytes() + m_coarse->points().size() * pointBytes + imageBytes(m_base.fine) +
+           imageBytes(m_base.coarse) + (m_base.finePoints.size() + m_base.coarsePoints.size()) * pointBytes +
+           m_base.objects.size() * sizeof(glm::mat4);
+}
+
 util::ImageRGB CoarseToFinePreview::image(int width, int height) const {
     return m_pending ? m_coarse->image(width, height) : m_fine->image(width, height);
 }

@@ -55,6 +55,11 @@ public:
 
     const RelightPreview& fine() const { return *m_fine; }
     const RelightPreview& coarse() const { return *m_coarse; }
+    // What coarse-to-fine costs on top of the full preview alone, in bytes: the coarse preview's
+    // per-point states and points, and the first answer's snapshot of both images and point sets
+    // (FirstAnswerBase). Not counted: the coarse preview's scene copy and BVHs (the size of the
+    // full preview's own copies).
+    size_t extraBytes() const;
 
 private:
     struct Pending {

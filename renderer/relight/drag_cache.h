@@ -1,5 +1,5 @@
 // Per preview point, what a translation drag of one object j needs besides j's shadow field
-// (shadow_field.h, docs/relighting.md §7.0d): the point's factors with O_j left out, so that its
+// (shadow_field.h, docs/relighting.md §7.0e): the point's factors with O_j left out, so that its
 // terms with j anywhere are a masked sum over the texels j blocks — no ray, no BRDF evaluation,
 // no Haar transform per frame.
 //   environment: 4 pi <T_K, L> = envBase - sum over t in (O_j & visible') of T'(t) L(t) dOmega,

@@ -1,5 +1,5 @@
 // RelightPreview's translation drag through a shadow field (relight_preview.h enableShadowField,
-// docs/relighting.md §7.0d): per point, the dragged object's occlusion looked up in its field at
+// docs/relighting.md §7.0e): per point, the dragged object's occlusion looked up in its field at
 // the point's offset from the object and combined with the point's drag cache (drag_cache.h).
 #include "relight/relight_preview.h"
 

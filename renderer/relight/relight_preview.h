@@ -88,7 +88,7 @@ public:
                              bool deferMovedObjects = false);
     const std::vector<uint8_t>& deferred() const { return m_deferred; }
 
-    // Translation drags of `object` through its shadow field (docs/relighting.md §7.0d): builds the
+    // Translation drags of `object` through its shadow field (docs/relighting.md §7.0e): builds the
     // field and every other hit point's drag cache (drag_cache.h). While only that object's
     // translation changes, applyChanges updates the terms from the field — approximate (the
     // field's position sampling), no visibility rays but for the points the object now covers —

@@ -1,7 +1,7 @@
 // The shadow field of one movable object (Zhou et al. 2005, "Precomputed shadow fields for
 // dynamic scenes"): its occlusion mask O_j over the sphere grid, precomputed once at sample
 // positions around it, so that a translation drag looks O_j up per preview point instead of
-// ray-casting it (docs/relighting.md §7.0d).
+// ray-casting it (docs/relighting.md §7.0e).
 //
 // Samples lie on `shells` concentric spheres about the object's bounding-sphere centre, radii
 // log-spaced from innerRatio to outerRatio times the bounding radius, each at the texel-centre
@@ -74,7 +74,7 @@ private:
     size_t m_words = 0;
     std::vector<uint64_t> m_masks; // (shell * directions + direction) * words
     // Per sample: inside the object (its rays hit it in >= 98% of the directions). Reported, not
-    // used: leaving them out of blends made the ring's contact zone worse (relighting.md §7.0d).
+    // used: leaving them out of blends made the ring's contact zone worse (relighting.md §7.0e).
     std::vector<uint8_t> m_inside;
 };
 

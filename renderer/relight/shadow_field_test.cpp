@@ -1,4 +1,4 @@
-// The shadow-field drag (shadow_field.h, drag_cache.h, docs/relighting.md §7.0d): the field is the
+// The shadow-field drag (shadow_field.h, drag_cache.h, docs/relighting.md §7.0e): the field is the
 // ray-cast occlusion at its samples, the drag cache with an exact mask gives the exact terms, an
 // incremental drag equals one step from the same cache, and a far move touches only the region
 // the object's old and new bounding cones reach.
