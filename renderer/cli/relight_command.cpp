@@ -18,6 +18,13 @@
 // DIR/edit_<i>_first.exr, firstMs / firstCpuMs (the coarse edit, deferring the moved object's
 // own points, + the correction), firstImageMs, and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE
 // against this edit's exact preview (the coarse image with those points stale).
+// --shadow-field: translation drags of the first object the list translates go through its
+// shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
+// --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
+// the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend)): the report's "shadowField" block says what the field and the per-point
+// caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks
+// and cacheMs; --field-check also keeps an exact preview beside it and reports each edit's
+// fieldVsExactRelRMSE (the field's image against the exact, ray-cast one).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -90,8 +97,9 @@ double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
 
 int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
-                                   "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride"},
-                            {"--skip-full-rebuild"});
+                                   "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride",
+                                   "--field-shells", "--field-directions", "--field-inner", "--field-outer"},
+                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
         return reportError(makeError(ErrorKind::Usage, "", "relight needs exactly one SCENE"));
@@ -107,8 +115,24 @@ int runRelight(const std::vector<std::string>& argv) {
     auto previewWidth = args->intValue("--preview", kDefaultPreviewWidth, 1, 4096);
     auto coarseLevel = args->intValue("--coarse-level", 0, 1, 7); // 0: no coarse answer
     auto coarseStride = args->intValue("--coarse-stride", 1, 1, 16);
-    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth, &coarseLevel, &coarseStride})
+    auto fieldShells = args->intValue("--field-shells", 32, 1, 1024);
+    auto fieldDirections = args->intValue("--field-directions", 5, 1, 7);
+    for (const auto* r : {&refSpp, &level, &keep, &threads, &previewWidth, &coarseLevel, &coarseStride, &fieldShells,
+                          &fieldDirections})
         if (!*r) return reportError(r->error());
+    relight::ShadowFieldSettings fieldSettings;
+    fieldSettings.shells = *fieldShells;
+    fieldSettings.directionLevel = *fieldDirections;
+    fieldSettings.interpolate = !args->has("--field-nearest");
+    for (auto [flag, target] : {std::pair{"--field-inner", &fieldSettings.innerRatio},
+                                std::pair{"--field-outer", &fieldSettings.outerRatio}})
+        if (auto v = args->value(flag)) {
+            char* end = nullptr;
+            const float x = std::strtof(v->c_str(), &end);
+            if (!end || *end || !(x > 0.0f) || !(x < 1e4f))
+                return reportError(makeError(ErrorKind::Usage, "", std::string(flag) + " needs a positive number"));
+            *target = x;
+        }
 
     const std::string scenePath = args->positional()[0];
     auto loaded = scene::loadScene(scenePath);
@@ -154,6 +178,34 @@ int runRelight(const std::vector<std::string>& argv) {
         coarse = std::move(built).value();
         coarseBuildMs = coarseTimer.milliseconds();
     }
+    // The shadow field of the first object the edit list translates (--shadow-field).
+    std::unique_ptr<relight::RelightPreview> exact; // --field-check: the ray-cast preview beside it
+    nlohmann::ordered_json fieldReport(nullptr);
+    if (args->has("--shadow-field")) {
+        std::optional<size_t> object;
+        for (const relight::PlannedEdit& edit : *edits)
+            for (const scene::Edit& change : edit.changes.edits())
+                if (const auto* pe = std::get_if<scene::PropertyEdit>(&change);
+                    !object && pe && pe->entity.kind == scene::EntityKind::Object && pe->property == "translation")
+                    for (size_t j = 0; j < scene.objects.size(); ++j)
+                        if (scene.objects[j].id == pe->entity.id) object = j;
+        if (object) {
+            if (args->has("--field-check")) {
+                auto built = relight::RelightPreview::create(scene, settings);
+                if (!built) return reportError(built.error());
+                exact = std::move(built).value();
+            }
+            const relight::ShadowFieldInfo info = (*preview)->enableShadowField(*object, fieldSettings);
+            fieldReport = {{"object", scene.objects[*object].name}, {"shells", fieldSettings.shells},
+                           {"directionSide", 1 << fieldSettings.directionLevel},
+                           {"interpolate", fieldSettings.interpolate},
+                           {"insideSamples", (*preview)->shadowField()->insideSamples()},
+                           {"innerRatio", fieldSettings.innerRatio}, {"outerRatio", fieldSettings.outerRatio},
+                           {"fieldMs", info.fieldMs}, {"fieldBytes", info.fieldBytes}, {"cacheMs", info.cacheMs},
+                           {"cachedPoints", info.cachedPoints},
+                           {"cacheBytesPerPoint", info.cachedPoints ? double(info.cacheBytes) / double(info.cachedPoints) : 0.0}};
+        }
+    }
     nlohmann::ordered_json report;
     report["scene"] = scenePath;
     report["preview"] = {{"width", settings.width}, {"height", settings.height},
@@ -167,6 +219,7 @@ int runRelight(const std::vector<std::string>& argv) {
                             {"width", coarseSettings.width}, {"height", coarseSettings.height},
                             {"buildMs", coarseBuildMs},
                             {"bytesPerPoint", coarse->hitCount() ? double(coarse->stateBytes()) / double(coarse->hitCount()) : 0.0}};
+    report["shadowField"] = fieldReport;
     report["reference"] = *refSpp > 0 ? nlohmann::ordered_json{{"device", "cpu"}, {"sampler", "mis"}, {"bounces", 1}, {"spp", *refSpp}}
                                       : nlohmann::ordered_json(nullptr);
     report["edits"] = nlohmann::ordered_json::array();
@@ -231,6 +284,17 @@ int runRelight(const std::vector<std::string>& argv) {
         e["sharedFactorsMs"] = summary.sharedMs;
         e["perPointMs"] = summary.pointsMs;
         e["imageMs"] = imageMs; // summing the cached terms into the output image (not in incrementalMs)
+        if (!fieldReport.is_null()) {
+            e["method"] = summary.method.empty() ? "exact" : summary.method;
+            e["pointsRebuilt"] = summary.pointsRebuilt;
+            e["fieldFallbacks"] = summary.fieldFallbacks;
+            e["cacheMs"] = summary.cacheMs;
+            e["rebuiltCpuMs"] = summary.rebuiltCpuMs; // of incrementalCpuMs: the hit-changed points
+        }
+        if (exact) {
+            exact->applyChanges(scene, edit.changes);
+            e["fieldVsExactRelRMSE"] = relight::relativeRmse(image, exact->image(*width, *height));
+        }
         e["maxRelDiffVsFullRebuild"] = skipFull ? nlohmann::ordered_json(nullptr)
                                                 : nlohmann::ordered_json(maxRelativeDifference((*preview)->image(), (*scratch)->image()));
         if (*refSpp > 0) {

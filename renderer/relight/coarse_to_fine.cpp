@@ -47,7 +47,11 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
 }
 
 EditSummary CoarseToFinePreview::applyFine() {
-    if (!m_pending) return EditSummary{"display", {}, 0, 0.0, 0.0};
+    if (!m_pending) {
+        EditSummary none;
+        none.kind = "display";
+        return none;
+    }
     Pending pending = std::move(*m_pending);
     m_pending.reset();
     const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);

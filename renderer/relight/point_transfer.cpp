@@ -182,14 +182,16 @@ void compressMaybeGrey(std::vector<glm::dvec3>& texels, int level, size_t keep, 
     compressGrey(grey, level, keep, out);
 }
 
-// <T, L_k> for the primary parameters, and for black when `black` is given.
-glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                        const scene::Light& light, glm::vec3* black) {
+// visit(entry, white, black) for every entry of the light that the point sees, in projection
+// order, with its contribution to <T, L_k> (black only when `black`): lightTermWith's sum term by
+// term, and the shadow field's per-entry cache (drag_cache.h).
+template <class Visit>
+void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                           const scene::Light& light, bool black, Visit&& visit) {
     const ResolvedMaterial& m = materialOf(ctx, p);
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
     const glm::vec3 origin = rayOrigin(p);
-    glm::vec3 sum(0.0f), sum0(0.0f);
     thread_local std::vector<TexelWeight> entries;
     projectUnitLight(light, origin, *ctx.dirs, entries);
     for (const TexelWeight& e : entries) {
@@ -206,15 +208,26 @@ glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const
         if (e.compact && m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
             if (local.z > 0.0f) {
                 glm::vec3 f0(0.0f);
-                sum += evalPair(m, m.params, black ? &m.black : nullptr, wo, local, f0) * local.z * e.weight;
-                sum0 += f0 * local.z * e.weight;
+                const glm::vec3 w = evalPair(m, m.params, black ? &m.black : nullptr, wo, local, f0) * local.z * e.weight;
+                visit(e, w, f0 * local.z * e.weight);
             }
             continue;
         }
         glm::vec3 f0(0.0f);
-        sum += unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0) * e.weight;
-        if (black) sum0 += f0 * e.weight;
+        const glm::vec3 w = unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0) * e.weight;
+        visit(e, w, black ? f0 * e.weight : glm::vec3(0.0f));
     }
+}
+
+// <T, L_k> for the primary parameters, and for black when `black` is given.
+glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                        const scene::Light& light, glm::vec3* black) {
+    glm::vec3 sum(0.0f), sum0(0.0f);
+    forEachSeenLightEntry(ctx, p, s, light, black != nullptr,
+                          [&](const TexelWeight&, const glm::vec3& w, const glm::vec3& b) {
+                              sum += w;
+                              sum0 += b;
+                          });
     if (black) *black = sum0;
     return sum;
 }
@@ -386,7 +399,8 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::ve
     return white;
 }
 
-PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
+PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,
+                           const TexelBits* selfBlocked) {
     PointState s;
     const TexelDirections& dirs = *ctx.dirs;
     TexelBits above = makeBits(dirs.count());
@@ -396,13 +410,43 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p) {
     const glm::vec3 origin = rayOrigin(p);
     const ObjectOccluder& own = (*ctx.occluders)[p.object];
     const bool convex = p.backFace ? own.convexBack : own.convexFront;
-    const TexelBits self = convex ? makeBits(dirs.count()) : castOcclusion(own, origin, dirs, above);
+    TexelBits self = convex ? makeBits(dirs.count()) : selfBlocked ? *selfBlocked : castOcclusion(own, origin, dirs, above);
+    if (selfBlocked && !convex)
+        for (size_t w = 0; w < self.size(); ++w) self[w] &= above[w];
     s.above = above;
     s.lit = above;
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];
-    for (uint32_t j = 0; j < ctx.occluders->size(); ++j) updateOcclusion(ctx, p, s, j);
+    for (uint32_t j = 0; j < ctx.occluders->size(); ++j)
+        if (j != skipObject) updateOcclusion(ctx, p, s, j);
     updateTransferAndTerms(ctx, p, s);
     return s;
+}
+
+void visibleTransferTexels(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                           std::vector<glm::vec3>& white, std::vector<glm::vec3>& black) {
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const bool affine = m.colourUse == ColourUse::Affine;
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    white.clear();
+    black.clear();
+    forEachVisibleTexel(s, [&](size_t t) {
+        glm::vec3 f0(0.0f);
+        const glm::vec3 f = unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0);
+        // rebuildGreyTransfer keeps one channel of each (white in red, black in green: evalPair).
+        white.push_back(affine && m.oneEval ? glm::vec3(f.x) : f);
+        if (affine) black.push_back(m.oneEval ? glm::vec3(f0.x) : f0);
+    });
+}
+
+void seenLightContributions(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                            const scene::Light& light, std::vector<LightContribution>& out) {
+    out.clear();
+    const bool affine = materialOf(ctx, p).colourUse == ColourUse::Affine;
+    forEachSeenLightEntry(ctx, p, s, light, affine,
+                          [&](const TexelWeight& e, const glm::vec3& w, const glm::vec3& b) {
+                              out.push_back(LightContribution{e.texel, e.distance, e.direction, w, b});
+                          });
 }
 
 } // namespace wavelit::relight

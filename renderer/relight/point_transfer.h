@@ -98,8 +98,14 @@ struct TransferContext {
 // The ray origin for a point's visibility rays: off the surface along n_g, as the path tracer.
 glm::vec3 rayOrigin(const PreviewPoint& p);
 
-// Everything: self-visibility, every object's occlusion, T, the environment and light terms.
-PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p);
+// Everything: self-visibility, every object's occlusion, T, the environment and light terms
+// (every object but `skipObject`: the shadow field's drag leaves the dragged object out, then
+// adds it from the field, drag_cache.h).
+// `selfBlocked`, when given, stands for the self-visibility rays of a non-convex object (the
+// texels its own object blocks, masked by the point's horizon): the shadow-field drag's own
+// surface cache (relight_preview.h).
+PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p,
+                           uint32_t skipObject = UINT32_MAX, const TexelBits* selfBlocked = nullptr);
 // Re-casts object j's occlusion over the lit texels its bounding cone may cover and
 // stores it when anything is blocked (never for the point's own object: that is Õ1).
 void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j);
@@ -123,5 +129,21 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
 // per ColourUse): environment term x envScale + sum of light terms x powers.
 glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
                    const std::vector<glm::vec3>& lightPowers);
+
+// T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
+// values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF
+// (else empty). For the shadow field's drag cache (drag_cache.h).
+void visibleTransferTexels(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                           std::vector<glm::vec3>& white, std::vector<glm::vec3>& black);
+// One entry of light k that a point sees, with its share of <T, L_k> (white, black for Affine).
+struct LightContribution {
+    uint32_t texel = 0;
+    float distance = 0.0f;     // to the light's samples in the texel (inf: the sun)
+    glm::vec3 direction{0.0f}; // toward them (unit)
+    glm::vec3 white{0.0f}, black{0.0f};
+};
+// lightTerm's sum term by term, in its order: the term is the sum of `out`'s white (black).
+void seenLightContributions(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                            const scene::Light& light, std::vector<LightContribution>& out);
 
 } // namespace wavelit::relight

@@ -84,7 +84,16 @@ bool lightConeMeets(const scene::Light& light, const glm::vec3& origin, const Bo
 
 EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
                                          bool deferMovedObjects) {
+    if (m_field) {
+        if (!deferMovedObjects && isFieldDrag(edited, changes)) return applyFieldDrag(edited);
+        bool dropField = structural(*m_scene, edited, changes);
+        for (const scene::Invalidation& inv : changes.invalidations())
+            dropField = dropField || (inv.factor == scene::FactorKind::ObjectGeometry &&
+                                      inv.id == m_scene->objects[m_field->object].id);
+        settleFieldDrag(dropField);
+    }
     EditSummary summary;
+    m_touched.assign(m_points.size(), 0);
     if (structural(*m_scene, edited, changes)) {
         rebuildAll(edited);
         summary.kind = "structure";
@@ -175,21 +184,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
                 if (inv.factor == scene::FactorKind::ObjectMaterial)
                     if (size_t j = indexOf(edited.objects, inv.id); j < m_occluders.size())
                         spheres.push_back(m_occluders[j].bounds);
-            cast = m_points;
-            const glm::vec3 eye = m_scene->camera.position;
-            parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
-                const glm::vec3 dir = -cast[i].wo;
-                for (const BoundingSphere& b : spheres) {
-                    const glm::vec3 oc = eye - b.centre;
-                    const float half = glm::dot(oc, dir), c = glm::dot(oc, oc) - b.radius * b.radius;
-                    if (b.radius >= 0.0f && (c <= 0.0f || (half <= 0.0f && half * half >= c))) {
-                        cast[i] = castPreviewPoint(*m_scene, m_bvh, m_settings.width, m_settings.height,
-                                                   int(i % size_t(m_settings.width)),
-                                                   int(i / size_t(m_settings.width)));
-                        return;
-                    }
-                }
-            });
+            cast = recastNear(spheres);
         }
     }
 
@@ -316,7 +311,26 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     });
     summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
     summary.pointsMs = timer.milliseconds();
+    m_touched = std::move(touched);
     return summary;
+}
+
+std::vector<PreviewPoint> RelightPreview::recastNear(const std::vector<BoundingSphere>& spheres) const {
+    std::vector<PreviewPoint> cast = m_points;
+    const glm::vec3 eye = m_scene->camera.position;
+    parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
+        const glm::vec3 dir = -cast[i].wo;
+        for (const BoundingSphere& b : spheres) {
+            const glm::vec3 oc = eye - b.centre;
+            const float half = glm::dot(oc, dir), c = glm::dot(oc, oc) - b.radius * b.radius;
+            if (b.radius >= 0.0f && (c <= 0.0f || (half <= 0.0f && half * half >= c))) {
+                cast[i] = castPreviewPoint(*m_scene, m_bvh, m_settings.width, m_settings.height,
+                                           int(i % size_t(m_settings.width)), int(i / size_t(m_settings.width)));
+                return;
+            }
+        }
+    });
+    return cast;
 }
 
 } // namespace wavelit::relight

@@ -19,10 +19,12 @@
 // One owner thread; the per-point work runs on `threads` workers inside each call.
 #pragma once
 
+#include "relight/drag_cache.h"
 #include "relight/environment_factor.h"
 #include "relight/object_occluder.h"
 #include "relight/point_transfer.h"
 #include "relight/preview_points.h"
+#include "relight/shadow_field.h"
 #include "relight/texel_directions.h"
 #include "scene/bvh.h"
 #include "scene/change_set.h"
@@ -32,6 +34,7 @@
 
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace wavelit::relight {
@@ -50,6 +53,24 @@ struct EditSummary {
     size_t pointsTouched = 0; // preview points with any per-point work
     double sharedMs = 0.0;    // shared factors: environment, object BVHs, G-buffer (reports only)
     double pointsMs = 0.0;    // the per-point work
+    // A translation drag through the object's shadow field (enableShadowField): "shadowField",
+    // else empty (the exact path). Its points whose camera hit moved onto the object were rebuilt
+    // exactly (`pointsRebuilt`, with rays); `fieldFallbacks` points lay beyond the field's outer
+    // shell (j's cone ray-cast); `cacheMs`: drag caches rebuilt first (after another edit).
+    std::string method;
+    size_t pointsRebuilt = 0;
+    size_t fieldFallbacks = 0;
+    double cacheMs = 0.0;
+    double rebuiltCpuMs = 0.0; // CPU time (all workers) of the points whose camera hit changed
+};
+
+// What enableShadowField built: the field (time, bytes) and the per-point drag caches.
+struct ShadowFieldInfo {
+    double fieldMs = 0.0;
+    size_t fieldBytes = 0;
+    double cacheMs = 0.0;
+    size_t cachedPoints = 0;
+    size_t cacheBytes = 0;
 };
 
 class RelightPreview {
@@ -66,6 +87,22 @@ public:
     EditSummary applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
                              bool deferMovedObjects = false);
     const std::vector<uint8_t>& deferred() const { return m_deferred; }
+
+    // Translation drags of `object` through its shadow field (docs/relighting.md §7.0e): builds the
+    // field and every other hit point's drag cache (drag_cache.h). While only that object's
+    // translation changes, applyChanges updates the terms from the field — approximate (the
+    // field's position sampling), no visibility rays but for the points the object now covers —
+    // and summary.method says "shadowField"; the first other edit first restores the exact state
+    // (the points the field updated re-cast O_j and rebuild T: equal to create() again), and
+    // drops the caches (rebuilt at the next translation); a rotation, scale or mesh edit of the
+    // object, or a structural one, drops the field (its masks live in world axes).
+    ShadowFieldInfo enableShadowField(size_t object, const ShadowFieldSettings& settings = {});
+    bool fieldApproximate() const; // some point's terms come from the field
+    // Per point: whether the last applyChanges did any work on it.
+    const std::vector<uint8_t>& lastTouched() const { return m_touched; }
+    const ShadowField* shadowField() const { return m_field ? &m_field->field : nullptr; }
+    const std::vector<PointDragCache>* dragCaches() const { return m_field ? &m_field->caches : nullptr; }
+    const std::vector<glm::vec3>& fieldEnvTexels() const; // L(t) dOmega per texel (tests)
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).
     util::ImageRGB image() const;
@@ -105,6 +142,36 @@ private:
     std::vector<std::vector<glm::vec3>> m_cameraLights;
     std::vector<scene::Light> m_unitLights; // unitPowerLight of each light
     void updateCameraLight(size_t k, size_t pixel, const CameraRays& rays);
+    // Preview points re-cast where the camera ray meets one of the spheres (the rest copied).
+    std::vector<PreviewPoint> recastNear(const std::vector<BoundingSphere>& spheres) const;
+    std::vector<uint8_t> m_touched;
+
+    // The shadow-field drag (field_drag.cpp).
+    struct FieldDrag {
+        size_t object = 0;
+        ShadowField field;
+        scene::Bvh bvhWithout;              // every object but `object`
+        std::vector<glm::vec3> envTexels;   // L(t) x dOmega
+        std::vector<PointDragCache> caches; // per point; invalid for misses and the object's own
+        bool cachesValid = false;
+        std::vector<uint8_t> approximate;   // per point: terms from the field (O_j and T stale)
+        // The object's own surface points at the drag's start, in its frame (offset from its
+        // bounding centre then), with the texels the object blocks for them (above & ~lit):
+        // self-visibility is translation-invariant, so a point the drag brings into view takes
+        // the nearest one's instead of its rays (non-convex objects only; an approximation).
+        glm::vec3 centre{0.0f};
+        float cell = 1.0f;
+        std::vector<glm::vec3> ownOffset, ownNormal;
+        std::vector<TexelBits> ownSelf;
+        std::unordered_map<int64_t, std::vector<uint32_t>> ownGrid;
+        const TexelBits* nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const;
+    };
+    std::unique_ptr<FieldDrag> m_field;
+    bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;
+    EditSummary applyFieldDrag(const scene::Scene& edited);
+    void buildDragCaches();
+    // Before any other edit: the exact state back; `dropField` also forgets the field.
+    void settleFieldDrag(bool dropField);
 };
 
 } // namespace wavelit::relight

@@ -1,0 +1,287 @@
+// RelightPreview's translation drag through a shadow field (relight_preview.h enableShadowField,
+// docs/relighting.md §7.0e): per point, the dragged object's occlusion looked up in its field at
+// the point's offset from the object and combined with the point's drag cache (drag_cache.h).
+#include "relight/relight_preview.h"
+
+#include "relight/camera_lights.h"
+#include "relight/parallel_for.h"
+#include "util/timer.h"
+#include "wavelet/haar.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <ctime>
+
+namespace wavelit::relight {
+namespace {
+
+int64_t threadCpuNs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return int64_t(t.tv_sec) * 1000000000 + int64_t(t.tv_nsec);
+}
+
+bool occludedBy(const PointState& s, size_t object) {
+    for (const Occlusion& o : s.occlusions)
+        if (o.object == object) return true;
+    return false;
+}
+
+int64_t cellKey(const glm::vec3& offset, float cell, int dx = 0, int dy = 0, int dz = 0) {
+    const int64_t x = int64_t(std::floor(offset.x / cell)) + dx, y = int64_t(std::floor(offset.y / cell)) + dy,
+                  z = int64_t(std::floor(offset.z / cell)) + dz;
+    return (x & 0x1fffff) | ((y & 0x1fffff) << 21) | ((z & 0x1fffff) << 42);
+}
+
+} // namespace
+
+const TexelBits* RelightPreview::FieldDrag::nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const {
+    const TexelBits* best = nullptr;
+    float bestDistance = 2.0f * cell * cell; // within about one cell
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                auto it = ownGrid.find(cellKey(offset, cell, dx, dy, dz));
+                if (it == ownGrid.end()) continue;
+                for (uint32_t k : it->second) {
+                    const glm::vec3 d = ownOffset[k] - offset;
+                    const float d2 = glm::dot(d, d);
+                    if (d2 < bestDistance && glm::dot(ownNormal[k], normal) > 0.9f) {
+                        bestDistance = d2;
+                        best = &ownSelf[k];
+                    }
+                }
+            }
+    return best;
+}
+
+ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFieldSettings& settings) {
+    ShadowFieldInfo info;
+    if (m_field) settleFieldDrag(true);
+    if (object >= m_occluders.size()) return info;
+    m_field = std::make_unique<FieldDrag>();
+    m_field->object = object;
+    util::Timer timer;
+    m_field->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads);
+    info.fieldMs = timer.milliseconds();
+    info.fieldBytes = m_field->field.bytes();
+    m_field->approximate.assign(m_points.size(), 0);
+    timer.restart();
+    buildDragCaches();
+    info.cacheMs = timer.milliseconds();
+    for (const PointDragCache& c : m_field->caches)
+        if (c.valid) {
+            ++info.cachedPoints;
+            info.cacheBytes += c.bytes();
+        }
+    return info;
+}
+
+bool RelightPreview::fieldApproximate() const {
+    return m_field && std::find(m_field->approximate.begin(), m_field->approximate.end(), uint8_t(1)) !=
+                          m_field->approximate.end();
+}
+
+const std::vector<glm::vec3>& RelightPreview::fieldEnvTexels() const {
+    static const std::vector<glm::vec3> none;
+    return m_field ? m_field->envTexels : none;
+}
+
+bool RelightPreview::isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const {
+    if (!m_field || changes.edits().empty() || edited.objects.size() != m_scene->objects.size()) return false;
+    const scene::EntityRef ref{scene::EntityKind::Object, m_scene->objects[m_field->object].id};
+    for (const scene::Edit& e : changes.edits()) {
+        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
+        if (!edit || edit->entity != ref || edit->property != "translation") return false;
+    }
+    return true;
+}
+
+void RelightPreview::buildDragCaches() {
+    FieldDrag& f = *m_field;
+    scene::Scene without = *m_scene;
+    without.objects.erase(without.objects.begin() + std::ptrdiff_t(f.object));
+    f.bvhWithout = scene::buildBvh(without);
+    f.envTexels.assign(m_dirs.count(), glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c) {
+        const wavelet::SquareGrid grid =
+            wavelet::inverseHaar(wavelet::HaarImage{m_settings.level, m_environment.coefficients[size_t(c)]});
+        for (size_t t = 0; t < f.envTexels.size(); ++t)
+            f.envTexels[t][c] = float(grid.values[t] * m_dirs.texelSolidAngle());
+    }
+    const TransferContext ctx = context();
+    TransferContext ctxWithout = ctx;
+    ctxWithout.sceneBvh = &f.bvhWithout;
+    f.caches.assign(m_points.size(), PointDragCache{});
+    // The object's own points (their self-visibility, for the points the drag brings into view).
+    const ObjectOccluder& own = m_occluders[f.object];
+    f.centre = own.bounds.centre;
+    f.ownOffset.clear();
+    f.ownNormal.clear();
+    f.ownSelf.clear();
+    f.ownGrid.clear();
+    if (!(own.convexFront && own.convexBack)) {
+        for (size_t i = 0; i < m_points.size(); ++i) {
+            const PreviewPoint& p = m_points[i];
+            if (!p.hit || p.object != f.object) continue;
+            TexelBits self = m_states[i].above;
+            for (size_t w = 0; w < self.size(); ++w) self[w] &= ~m_states[i].lit[w];
+            f.ownOffset.push_back(rayOrigin(p) - f.centre);
+            f.ownNormal.push_back(p.geometric);
+            f.ownSelf.push_back(std::move(self));
+        }
+        // Cells of ~2 point spacings: the points cover the visible surface about evenly.
+        f.cell = std::max(1e-4f, 4.0f * own.bounds.radius / std::sqrt(float(std::max<size_t>(f.ownOffset.size(), 1))));
+        for (uint32_t k = 0; k < f.ownOffset.size(); ++k) f.ownGrid[cellKey(f.ownOffset[k], f.cell)].push_back(k);
+    }
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        const PreviewPoint& p = m_points[i];
+        if (!p.hit || p.object == f.object) return;
+        PointState without = m_states[i];
+        if (occludedBy(without, f.object)) { // T' differs from T: its coefficients and 4 pi <T'_K, L>
+            std::erase_if(without.occlusions, [&](const Occlusion& o) { return o.object == f.object; });
+            rebuildTransfer(ctx, p, without);
+            updateEnvironmentTerms(ctx, without);
+        }
+        f.caches[i] = buildDragCache(ctxWithout, p, without);
+    });
+    f.cachesValid = true;
+}
+
+void RelightPreview::settleFieldDrag(bool dropField) {
+    FieldDrag& f = *m_field;
+    const TransferContext ctx = context();
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        if (!f.approximate[i]) return;
+        f.approximate[i] = 0;
+        updateOcclusion(ctx, m_points[i], m_states[i], uint32_t(f.object));
+        updateTransferAndTerms(ctx, m_points[i], m_states[i]);
+    });
+    f.caches.clear();
+    f.caches.shrink_to_fit();
+    f.cachesValid = false;
+    if (dropField) m_field.reset();
+}
+
+EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
+    FieldDrag& f = *m_field;
+    const size_t j = f.object;
+    EditSummary summary;
+    summary.kind = "object";
+    summary.method = "shadowField";
+    util::Timer timer;
+    const BoundingSphere oldBounds = m_occluders[j].bounds;
+    m_scene = std::make_unique<scene::Scene>(edited);
+    resolveMaterials();
+    m_occluders[j] = buildObjectOccluder(*m_scene, j, m_convexity);
+    summary.factorsRebuilt = {"occlusion:" + m_scene->objects[j].name + " (shadow field)", "gbuffer"};
+    if (!f.cachesValid) {
+        util::Timer cacheTimer;
+        buildDragCaches();
+        summary.cacheMs = cacheTimer.milliseconds();
+    }
+    m_bvh = scene::buildBvh(*m_scene);
+    const BoundingSphere sphere = m_occluders[j].bounds;
+    const std::vector<PreviewPoint> cast = recastNear({oldBounds, sphere});
+    summary.sharedMs = timer.milliseconds();
+    timer.restart();
+
+    const TransferContext ctx = context();
+    TransferContext ctxWithout = ctx;
+    ctxWithout.sceneBvh = &f.bvhWithout;
+    const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
+    const bool nearest = !f.field.settings().interpolate;
+    std::atomic<int64_t> rebuiltNs{0}; // CPU time of the points whose camera hit changed
+    std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
+    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+        PreviewPoint& p = m_points[i];
+        PointState& s = m_states[i];
+        PointDragCache& cache = f.caches[i];
+        const bool hitChanged = !(cast[i] == p);
+        if (hitChanged) {
+            const int64_t start = threadCpuNs();
+            struct Charge { // the hit-changed branch's CPU time, on every way out of it
+                std::atomic<int64_t>& sum;
+                int64_t start;
+                ~Charge() { sum += threadCpuNs() - start; }
+            } charge{rebuiltNs, start};
+            p = cast[i];
+            touched[i] = 1;
+            for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
+            cache = PointDragCache{};
+            f.approximate[i] = 0;
+            if (!p.hit) {
+                s = PointState{};
+                m_background[i] = environmentRadiance(m_scene->lighting.environment, -p.wo);
+                return;
+            }
+            if (p.object == j) { // the object's own surface: its factors, self-visibility cached
+                // Its offset from the object's centre now, as the cached points' from the centre then.
+                const glm::vec3 offset = rayOrigin(p) - sphere.centre;
+                s = buildPointState(ctx, p, UINT32_MAX, f.ownGrid.empty() ? nullptr : f.nearestSelf(offset, p.geometric));
+                rebuilt[i] = 1;
+                return;
+            }
+            // A surface the object uncovered: its factors without the object, then the field.
+            s = buildPointState(ctx, p, uint32_t(j));
+            cache = buildDragCache(ctxWithout, p, s);
+            rebuilt[i] = 1;
+        } else if (!p.hit || !cache.valid) {
+            return;
+        }
+        const glm::vec3 origin = rayOrigin(p);
+        // The interpolated field: the union of the blended samples' masks, and per texel of it
+        // the blended occlusion (thread-local, dense, written only on the union's texels).
+        thread_local std::vector<float> weight;
+        thread_local TexelBits unionBits;
+        const float* weights = nullptr;
+        const uint64_t* mask = nullptr;
+        ShadowField::Blend blend;
+        if (!nearest && f.field.blend(origin - sphere.centre, blend)) {
+            weight.resize(m_dirs.count());
+            unionBits.assign(cache.visible.size(), 0);
+            for (size_t w = 0; w < unionBits.size(); ++w) {
+                uint64_t any = 0;
+                for (int k = 0; k < blend.count; ++k) any |= blend.masks[k][w];
+                unionBits[w] = any; // not only visible': a light's shadow-ray entries read it too
+                for (uint64_t bits = unionBits[w]; bits; bits &= bits - 1) {
+                    const size_t b = size_t(__builtin_ctzll(bits));
+                    float sum = 0.0f;
+                    for (int k = 0; k < blend.count; ++k)
+                        if ((blend.masks[k][w] >> b) & 1u) sum += blend.weights[k];
+                    weight[w * 64 + b] = std::min(sum, 1.0f);
+                }
+            }
+            mask = unionBits.data();
+            weights = weight.data();
+        } else if (nearest) {
+            mask = f.field.lookup(origin - sphere.centre);
+        }
+        TexelBits cast_;
+        if (!mask) { // beyond the outer shell: j covers a few texels, ray-cast them
+            fallback[i] = 1;
+            cast_ = coneTexels(sphere, origin, m_dirs, cache.visible);
+            if (anyBit(cast_)) cast_ = castOcclusion(m_occluders[j], origin, m_dirs, cast_);
+            mask = cast_.data();
+        }
+        bool blocks = false;
+        for (size_t w = 0; w < cache.visible.size() && !blocks; ++w) blocks = (mask[w] & cache.visible[w]) != 0;
+        // Nothing of j in view now, nor in the terms the point holds: unchanged.
+        if (!blocks && !hitChanged && !f.approximate[i] && !occludedBy(s, j)) return;
+        applyDragMask(cache, mask, sphere, origin, f.envTexels, s, nullptr, mask == cast_.data() ? nullptr : weights);
+        f.approximate[i] = 1;
+        touched[i] = 1;
+    });
+    summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
+    summary.pointsRebuilt = size_t(std::count(rebuilt.begin(), rebuilt.end(), uint8_t(1)));
+    summary.fieldFallbacks = size_t(std::count(fallback.begin(), fallback.end(), uint8_t(1)));
+    summary.rebuiltCpuMs = double(rebuiltNs.load()) * 1e-6;
+    summary.pointsMs = timer.milliseconds();
+    m_touched = std::move(touched);
+    return summary;
+}
+
+} // namespace wavelit::relight
