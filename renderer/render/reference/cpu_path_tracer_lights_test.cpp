@@ -8,7 +8,8 @@
 
 #include "render/reference/cpu_camera.h"
 #include "render/testing/cpu_analytic_scenes.h"
-#include "scene/bvh.h"
+#include "render/testing/cpu_test_tracer.h"
+#include "render/testing/pixel_moments.h"
 #include "util/image.h"
 #include "util/path_sampler.h"
 
@@ -50,14 +51,6 @@ RenderOptions options(int bounces) {
     o.seed = 5;
     o.device = DeviceChoice::Cpu;
     return o;
-}
-
-std::unique_ptr<CpuPathTracer> makeTracer(std::shared_ptr<const scene::Scene> scene,
-                                          const RenderOptions& o) {
-    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    auto tracer = CpuPathTracer::create(scene, bvh, o, 1);
-    EXPECT_TRUE(tracer.ok()) << (tracer.ok() ? "" : tracer.error().message());
-    return tracer.ok() ? std::move(tracer.value()) : nullptr;
 }
 
 // Where the camera ray of (x, y, pass) meets the plane y = 0: the tracer's first two draws.
@@ -119,7 +112,8 @@ TEST(CpuPathTracerLights, LambertPlaneUnderAPointLight) {
     l.intensity = 50.0f;
     s->lighting.lights.push_back(l);
     const RenderOptions o = options(1);
-    auto tracer = makeTracer(s, o);
+    auto tracer = makeCpuTestTracer(s, o);
+    ASSERT_TRUE(tracer);
     auto r = compareWithIrradiance(*s, *tracer, o, [&](const glm::vec3& p) {
         return pointIrradiance(l.position, l.intensity, p);
     });
@@ -138,7 +132,8 @@ TEST(CpuPathTracerLights, LambertPlaneUnderASun) {
         l.angularDiameterDeg = d;
         s->lighting.lights.push_back(l);
         const RenderOptions o = options(1);
-        auto tracer = makeTracer(s, o);
+        auto tracer = makeCpuTestTracer(s, o);
+        ASSERT_TRUE(tracer);
         const double e = l.intensity * -l.direction.y; // E cos θ: exact for any cone above the horizon
         auto r = compareWithIrradiance(*s, *tracer, o, [&](const glm::vec3&) { return e; });
         EXPECT_NEAR(r.meanRatio, 1.0, kClosedFormTolerance) << "d=" << d;
@@ -160,7 +155,8 @@ TEST(CpuPathTracerLights, FarSphereLightMatchesThePointLight) {
     l.intensity = 200.0f;
     s->lighting.lights.push_back(l);
     const RenderOptions o = options(1);
-    auto tracer = makeTracer(s, o);
+    auto tracer = makeCpuTestTracer(s, o);
+    ASSERT_TRUE(tracer);
     auto r = compareWithIrradiance(*s, *tracer, o, [&](const glm::vec3& p) {
         return pointIrradiance(l.position, l.intensity, p);
     });
@@ -199,7 +195,8 @@ TEST(CpuPathTracerLights, RectLightOnItsAxis) {
     l.intensity = 40.0f;
     s->lighting.lights.push_back(l);
     const RenderOptions o = options(1);
-    auto tracer = makeTracer(s, o);
+    auto tracer = makeCpuTestTracer(s, o);
+    ASSERT_TRUE(tracer);
     auto r = compareWithIrradiance(*s, *tracer, o, [&](const glm::vec3& p) {
         return rectIrradiance(l.position, l.size.x, l.size.y, l.intensity, p);
     });
@@ -219,7 +216,8 @@ TEST(CpuPathTracerLights, SpotIsAPointLightInsideAndDarkOutside) {
     l.intensity = 50.0f;
     s->lighting.lights.push_back(l);
     const RenderOptions o = options(1);
-    auto tracer = makeTracer(s, o);
+    auto tracer = makeCpuTestTracer(s, o);
+    ASSERT_TRUE(tracer);
     auto angle = [&](const glm::vec3& p) {
         return glm::degrees(std::acos(glm::dot(glm::normalize(p - l.position), l.direction)));
     };
@@ -235,34 +233,6 @@ TEST(CpuPathTracerLights, SpotIsAPointLightInsideAndDarkOutside) {
     EXPECT_EQ(outside.maxRelativeError, 0.0); // exactly dark: the error is the rendered value
     std::printf("[ lights     ] spot: %d pixels inside (max error %.2e), %d outside (all 0)\n",
                 inside.pixels, inside.maxRelativeError, outside.pixels);
-}
-
-// The image mean and its standard error from per-pixel sample variances (the image's spatial
-// variation is not noise: every strategy sees the same pixels).
-struct Moments {
-    double mean = 0.0, standardError = 0.0, pixelVariance = 0.0; // variance: mean over pixels
-};
-
-Moments imageMoments(const CpuPathTracer& tracer, int passes) {
-    double sum = 0.0, varianceSum = 0.0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            double s1 = 0.0, s2 = 0.0;
-            for (int pass = 0; pass < passes; ++pass) {
-                double v = tracer.samplePixel(x, y, pass).x;
-                s1 += v;
-                s2 += v * v;
-            }
-            const double mean = s1 / passes;
-            sum += mean;
-            varianceSum += std::max(0.0, s2 - passes * mean * mean) / (passes - 1);
-        }
-    const double pixels = double(kSize) * kSize;
-    Moments m;
-    m.mean = sum / pixels;
-    m.pixelVariance = varianceSum / pixels;
-    m.standardError = std::sqrt(varianceSum / passes) / pixels;
-    return m;
 }
 
 TEST(CpuPathTracerLights, LightOnlyBsdfOnlyAndMisAgreeOnAGlossyPlane) {
@@ -300,13 +270,14 @@ TEST(CpuPathTracerLights, LightOnlyBsdfOnlyAndMisAgreeOnAGlossyPlane) {
         auto s = makePlaneScene(ggx);
         s->camera.position = glm::vec3(0.0f, 1.0f, 2.0f);
         s->lighting.lights.push_back(c.light);
-        auto tracer = makeTracer(s, options(1));
-        Moments m[3];
+        auto tracer = makeCpuTestTracer(s, options(1));
+        ASSERT_TRUE(tracer);
+        PixelMoments m[3];
         const LightStrategy strategies[3] = {LightStrategy::Mis, LightStrategy::LightOnly,
                                              LightStrategy::BsdfOnly};
         for (int i = 0; i < 3; ++i) {
             tracer->setLightStrategy(strategies[i]);
-            m[i] = imageMoments(*tracer, passes);
+            m[i] = pixelMoments(*tracer, kSize, kSize, passes);
         }
         for (int i = 1; i < 3; ++i) {
             const double sigma = std::hypot(m[0].standardError, m[i].standardError);
@@ -320,55 +291,6 @@ TEST(CpuPathTracerLights, LightOnlyBsdfOnlyAndMisAgreeOnAGlossyPlane) {
                     m[2].standardError, m[1].pixelVariance / m[0].pixelVariance,
                     m[2].pixelVariance / m[0].pixelVariance);
     }
-}
-
-TEST(CpuPathTracerLights, MisOverEnvAndLightsAgreesWithBsdf) {
-    // `mis` over a lit env with analytic lights (env NEE by the alias-table env technique, light
-    // NEE, each MIS-weighted against the BSDF continuation): its mean must equal `bsdf`'s (lights
-    // by NEE, env by BSDF sampling alone). A glossy plane that mirrors a sphere light and a rect
-    // light, an env with a one-texel sun, two bounces.
-    scene::Material ggx;
-    ggx.brdf = "ggx";
-    ggx.roughness = 0.3f;
-    ggx.baseColor = glm::vec3(0.9f);
-    auto s = makePlaneScene(ggx);
-    s->camera.position = glm::vec3(0.0f, 1.0f, 2.0f);
-    // An env that matters as much as the lights: a bright sky, a dim ground, a one-texel sun.
-    auto image = std::make_shared<util::ImageRGB>(16, 8, glm::vec3(0.05f));
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 16; ++x) image->at(x, y) = glm::vec3(2.0f, 2.5f, 3.0f);
-    image->at(7, 2) = glm::vec3(400.0f);
-    s->lighting.environment.image = image;
-    s->lighting.environment.intensity = 1.0f;
-    scene::Light sphere;
-    sphere.type = scene::LightType::Sphere;
-    sphere.position = glm::vec3(0.0f, 1.0f, -2.0f);
-    sphere.intensity = 30.0f;
-    sphere.radius = 0.3f;
-    s->lighting.lights.push_back(sphere);
-    scene::Light rect = sphere;
-    rect.type = scene::LightType::Rect;
-    rect.position = glm::vec3(1.0f, 1.5f, -1.0f);
-    rect.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.5f));
-    rect.size = glm::vec2(1.0f, 0.6f);
-    s->lighting.lights.push_back(rect);
-    const int passes = 128;
-    Moments m[2];
-    const SamplerKind kinds[2] = {SamplerKind::Bsdf, SamplerKind::Mis};
-    for (int i = 0; i < 2; ++i) {
-        RenderOptions o = options(2);
-        o.sampler = kinds[i];
-        auto tracer = makeTracer(s, o);
-        ASSERT_TRUE(tracer);
-        m[i] = imageMoments(*tracer, passes);
-    }
-    const double sigma = std::hypot(m[0].standardError, m[1].standardError);
-    EXPECT_NEAR(m[1].mean, m[0].mean, kStrategySigmas * sigma);
-    EXPECT_GT(m[0].mean, 0.0);
-    std::printf("[ env + lights ] bsdf %.4f±%.4f mis %.4f±%.4f (|z| %.2f); "
-                "variance mis/bsdf %.2f\n",
-                m[0].mean, m[0].standardError, m[1].mean, m[1].standardError,
-                std::abs(m[1].mean - m[0].mean) / sigma, m[1].pixelVariance / m[0].pixelVariance);
 }
 
 TEST(CpuPathTracerLights, HardCasesStayFinite) {
@@ -396,7 +318,8 @@ TEST(CpuPathTracerLights, HardCasesStayFinite) {
             l.radius = 0.3f;
             s->lighting.lights.push_back(l);
         }
-        auto tracer = makeTracer(s, options(4));
+        auto tracer = makeCpuTestTracer(s, options(4));
+        ASSERT_TRUE(tracer);
         for (int pass = 0; pass < 4; ++pass) ASSERT_TRUE(tracer->renderPass().ok());
         auto img = tracer->image();
         ASSERT_TRUE(img.ok());

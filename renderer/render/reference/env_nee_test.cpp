@@ -15,8 +15,9 @@
 #include "render/reference/cpu_path_tracer.h"
 #include "render/reference/outlier_tracer.h"
 #include "render/sampling/sampler_constants.h"
+#include "render/testing/cpu_test_tracer.h"
+#include "render/testing/pixel_moments.h"
 #include "render/testing/sampler_test_envs.h"
-#include "scene/bvh.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -26,6 +27,7 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 namespace wavelit::render {
 namespace {
@@ -66,16 +68,13 @@ std::shared_ptr<scene::Scene> diffuseSceneUnder(const scene::Environment& env) {
 
 std::unique_ptr<CpuPathTracer> tracerFor(std::shared_ptr<const scene::Scene> scene,
                                          SamplerKind kind, int size, int bounces) {
-    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
     RenderOptions o;
     o.width = o.height = size;
     o.bounces = bounces;
     o.seed = 5;
     o.device = DeviceChoice::Cpu;
     o.sampler = kind;
-    auto t = CpuPathTracer::create(scene, bvh, o, 1);
-    EXPECT_TRUE(t.ok()) << (t.ok() ? "" : t.error().message());
-    return t.ok() ? std::move(t.value()) : nullptr;
+    return makeCpuTestTracer(std::move(scene), o);
 }
 
 // max over texels of max(R, G, B) / luminance (texels with light).
@@ -139,33 +138,18 @@ TEST(EnvNee, MisShadowRayRouletteKeepsTheMean) {
     static_assert(0.04 / std::numbers::pi < kMisEnvRoulette, "every shadow ray must play");
     const auto scene = makeFurnaceScene(dark, glm::vec3(1.0f), 32, 16);
     constexpr int kSize = 24, kPasses = 256;
-    double mean[2], var[2]; // the image mean and its variance (pixels' own noise only)
+    PixelMoments m[2];
     const SamplerKind kinds[2] = {SamplerKind::Mis, SamplerKind::Bsdf};
     for (int k = 0; k < 2; ++k) {
         auto tracer = tracerFor(scene, kinds[k], kSize, 1);
         ASSERT_TRUE(tracer);
-        double sum = 0.0, noise = 0.0;
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                double s1 = 0.0, s2 = 0.0;
-                for (int pass = 0; pass < kPasses; ++pass) {
-                    const double v = util::luminance(tracer->samplePixel(x, y, pass));
-                    s1 += v;
-                    s2 += v * v;
-                }
-                const double m = s1 / kPasses;
-                sum += m;
-                noise += std::max(0.0, s2 / kPasses - m * m) / (kPasses - 1);
-            }
-        const double pixels = double(kSize) * kSize;
-        mean[k] = sum / pixels;
-        var[k] = noise / (pixels * pixels);
+        m[k] = pixelMoments(*tracer, kSize, kSize, kPasses, MomentChannel::Luminance);
     }
-    const double z = (mean[0] - mean[1]) / std::sqrt(var[0] + var[1]);
-    std::printf("[env nee] furnace albedo 0.04: mis %.6g, bsdf %.6g, z %.2f\n", mean[0], mean[1],
-                z);
+    const double z = (m[0].mean - m[1].mean) / std::hypot(m[0].standardError, m[1].standardError);
+    std::printf("[env nee] furnace albedo 0.04: mis %.6g, bsdf %.6g, z %.2f\n", m[0].mean,
+                m[1].mean, z);
     EXPECT_LT(std::abs(z), 4.0);
-    EXPECT_GT(mean[0], 0.0);
+    EXPECT_GT(m[0].mean, 0.0);
 }
 
 TEST(OutlierTracer, FindsTheKnownOutlierPath) {
