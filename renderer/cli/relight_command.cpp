@@ -38,6 +38,7 @@
 #include "scene/atomic_file.h"
 #include "scene/image_io.h"
 #include "scene/scene_io.h"
+#include "util/image_compare.h"
 #include "util/timer.h"
 
 #include <nlohmann/json.hpp>
@@ -83,16 +84,6 @@ double processCpuMs() {
 
 // Largest |a - b| / max(|b|, 1e-6) over pixels and channels: the incremental preview against
 // the from-scratch one (architecture.md §8: cached products against full recomputation).
-double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
-    double worst = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double x = a.pixels[i][c], y = b.pixels[i][c];
-            worst = std::max(worst, std::abs(x - y) / std::max(std::abs(y), 1e-6));
-        }
-    return worst;
-}
-
 } // namespace
 
 int runRelight(const std::vector<std::string>& argv) {
@@ -296,7 +287,7 @@ int runRelight(const std::vector<std::string>& argv) {
             e["fieldVsExactRelRMSE"] = relight::relativeRmse(image, exact->image(*width, *height));
         }
         e["maxRelDiffVsFullRebuild"] = skipFull ? nlohmann::ordered_json(nullptr)
-                                                : nlohmann::ordered_json(maxRelativeDifference((*preview)->image(), (*scratch)->image()));
+                                                : nlohmann::ordered_json(util::maxRelativeDifference((*preview)->image(), (*scratch)->image()));
         if (*refSpp > 0) {
             auto reference = directLightingReference(scene, *width, *height, *refSpp);
             if (!reference) return reportError(reference.error());

@@ -3,6 +3,7 @@
 // drag of several frames (object moves, a roughness edit and a light move piled up).
 #include "relight/coarse_to_fine.h"
 #include "relight/relight_test_support.h"
+#include "util/image_compare.h"
 
 #include <gtest/gtest.h>
 
@@ -13,16 +14,6 @@
 
 namespace wavelit::relight {
 namespace {
-
-double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
-    double worst = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double x = a.pixels[i][c], y = b.pixels[i][c];
-            worst = std::max(worst, std::abs(x - y) / std::max(std::abs(y), 1e-6));
-        }
-    return worst;
-}
 
 TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScratch) {
     using K = scene::EntityKind;
@@ -47,7 +38,7 @@ TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScra
         EXPECT_TRUE((*preview)->finePending());
         auto coarseScratch = RelightPreview::create(scene, coarseSettings);
         ASSERT_TRUE(coarseScratch);
-        EXPECT_LE(maxRelativeDifference((*preview)->image(w, h), (*coarseScratch)->image(w, h)), 1e-6);
+        EXPECT_LE(util::maxRelativeDifference((*preview)->image(w, h), (*coarseScratch)->image(w, h)), 1e-6);
     }
     const EditSummary fine = (*preview)->applyFine();
     EXPECT_EQ(fine.kind, "object"); // the merged set holds the object move
@@ -55,9 +46,9 @@ TEST(RelightCoarseToFine, FirstAnswerIsTheCoarseGridThenTheFullOneEqualsFromScra
     auto scratch = RelightPreview::create(scene, settings);
     ASSERT_TRUE(scratch);
     const util::ImageRGB full = (*preview)->image(w, h);
-    EXPECT_LE(maxRelativeDifference(full, (*scratch)->image()), 1e-6);
+    EXPECT_LE(util::maxRelativeDifference(full, (*scratch)->image()), 1e-6);
     // The coarse answer is an approximation of it, not the same image.
-    EXPECT_GT(maxRelativeDifference((*preview)->coarseImage(w, h), full), 1e-3);
+    EXPECT_GT(util::maxRelativeDifference((*preview)->coarseImage(w, h), full), 1e-3);
     EXPECT_EQ((*preview)->applyFine().pointsTouched, 0u); // nothing pending
 }
 
@@ -75,7 +66,7 @@ TEST_P(RelightFirstAnswer, CorrectedFirstAnswerIsCloseToTheExactPreview) {
     ASSERT_TRUE(preview);
     const int w = settings.width, h = settings.height;
     const util::ImageRGB stale = (*preview)->fine().image(); // before the drag
-    EXPECT_EQ(maxRelativeDifference((*preview)->firstAnswer(w, h), stale), 0.0);
+    EXPECT_EQ(util::maxRelativeDifference((*preview)->firstAnswer(w, h), stale), 0.0);
     for (const glm::vec3& to : {glm::vec3(0.2f, 0.5f, 0.0f), glm::vec3(0.25f, 0.5f, 0.05f)}) {
         scene::ChangeSet changes;
         ASSERT_TRUE(changes.setProperty(scene, {K::Object, 4}, "translation", to));
@@ -99,17 +90,17 @@ TEST_P(RelightFirstAnswer, CorrectedFirstAnswerIsCloseToTheExactPreview) {
         EXPECT_GT(std::count((*preview)->coarse().deferred().begin(), (*preview)->coarse().deferred().end(), 1), 0);
     }
     (*preview)->applyFine();
-    EXPECT_LE(maxRelativeDifference((*preview)->firstAnswer(w, h), exact), 1e-6); // then exact
+    EXPECT_LE(util::maxRelativeDifference((*preview)->firstAnswer(w, h), exact), 1e-6); // then exact
     // and the coarse preview is a coarse build from scratch again (its deferred points rebuilt)
     auto coarseScratch = RelightPreview::create(scene, (*preview)->coarse().settings());
     ASSERT_TRUE(coarseScratch);
-    EXPECT_LE(maxRelativeDifference((*preview)->coarseImage(w, h), (*coarseScratch)->image(w, h)), 1e-6);
+    EXPECT_LE(util::maxRelativeDifference((*preview)->coarseImage(w, h), (*coarseScratch)->image(w, h)), 1e-6);
     // A pending light move: the coarse image (the correction is for object and material edits).
     scene::ChangeSet light;
     ASSERT_TRUE(light.setProperty(scene, {K::Light, 7}, "position", glm::vec3(-1.0f, 2.2f, 0.3f)));
     ASSERT_TRUE(light.apply(scene));
     (*preview)->applyCoarse(scene, light);
-    EXPECT_EQ(maxRelativeDifference((*preview)->firstAnswer(w, h), (*preview)->coarseImage(w, h)), 0.0);
+    EXPECT_EQ(util::maxRelativeDifference((*preview)->firstAnswer(w, h), (*preview)->coarseImage(w, h)), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Defer, RelightFirstAnswer, ::testing::Bool());

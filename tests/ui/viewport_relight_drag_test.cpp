@@ -15,6 +15,7 @@
 #include "viewport/viewport_widget.h"
 
 #include "relight/relight_preview.h"
+#include "util/image_compare.h"
 
 #include <QtTest>
 
@@ -28,16 +29,6 @@ namespace {
 constexpr int kTimeoutMs = 240000;
 constexpr int kSize = 64;
 constexpr int kDragFrames = 4;
-
-double maxRelativeDifference(const util::ImageRGB& a, const util::ImageRGB& b) {
-    double worst = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double x = a.pixels[i][c], y = b.pixels[i][c];
-            worst = std::max(worst, std::abs(x - y) / std::max(std::abs(y), 1e-6));
-        }
-    return worst;
-}
 
 void sendMouse(ViewportWidget* viewport, QEvent::Type type, QPointF imagePoint, Qt::MouseButton button,
                Qt::MouseButtons buttons) {
@@ -126,7 +117,7 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
     const scene::Scene& finalScene = *window.document()->scene();
     auto scratch = relight::RelightPreview::create(finalScene, RelightWorker::previewSettings(finalScene, kSize, kSize));
     QVERIFY(scratch);
-    const double diff = maxRelativeDifference(*renderer->latestPreview().image, (*scratch)->image(kSize, kSize));
+    const double diff = util::maxRelativeDifference(*renderer->latestPreview().image, (*scratch)->image(kSize, kSize));
     qInfo("exact preview vs from scratch: max relative difference %.3g", diff);
     QVERIFY(diff <= 1e-6);
     // On screen: the exact preview, or the path tracer that took over from it — never the first answer.
@@ -159,7 +150,7 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
     const scene::Scene& rougher = *window.document()->scene();
     auto scratch2 = relight::RelightPreview::create(rougher, RelightWorker::previewSettings(rougher, kSize, kSize));
     QVERIFY(scratch2);
-    const double diff2 = maxRelativeDifference(*renderer->latestPreview().image, (*scratch2)->image(kSize, kSize));
+    const double diff2 = util::maxRelativeDifference(*renderer->latestPreview().image, (*scratch2)->image(kSize, kSize));
     qInfo("exact preview after the roughness edit vs from scratch: max relative difference %.3g", diff2);
     QVERIFY(diff2 <= 1e-6);
     QTRY_VERIFY_WITH_TIMEOUT((renderer->latestFrame().generation == roughnessEdit &&
