@@ -149,6 +149,7 @@ private:
     vk::Buffer m_brdfTables;
     uint32_t m_brdfTableBinding = 0;
     bool m_brdfTablesCompiled = false; // the kernel reads measured tables (create)
+    bool m_productCompiled = false;    // the kernel carries the product code (create)
     BrdfPluginSet m_brdfPluginsCompiled = 0; // the BRDF twins the kernel carries (create)
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;

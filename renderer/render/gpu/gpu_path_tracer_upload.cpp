@@ -104,6 +104,10 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (!tables)
             return tables.error();
         samplerTables = std::move(tables.value());
+        if (samplerTables.tables && samplerTables.tables->kind() == SamplerKind::Wavelet &&
+            samplerTables.tables->anyProduct() && !m_productCompiled)
+            return util::makeError(util::ErrorKind::Unsupported, "",
+                                   "the kernel was compiled without the wavelet product code");
         // The cache hands back the same tables when an edit invalidated none of them (an object
         // move, a light edit): the sampler buffers on the device are then still right, and
         // re-packing them (the env table alone is ~22 MiB at 1024^2) would stall every drag.
