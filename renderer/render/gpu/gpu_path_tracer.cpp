@@ -83,6 +83,7 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         if (!tables)
             return tables.error();
         pt->m_productCompiled = tables->tables && tables->tables->anyProduct();
+        pt->m_createTables = std::move(tables.value());
     }
     if (pt->m_productCompiled)
         compile.defines.push_back("WAVELIT_PRODUCT_SAMPLER=1");

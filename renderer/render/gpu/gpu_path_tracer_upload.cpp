@@ -100,10 +100,16 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     float samplerEnvMean = m_samplerEnvMean;
     const SamplerTablesRebuilds rebuildsBefore = m_tablesCache.rebuilds();
     if (usesDirectionSamplers()) {
-        auto tables = m_tablesCache.update(scene, m_options.sampler, changed);
-        if (!tables)
-            return tables.error();
-        samplerTables = std::move(tables.value());
+        if (m_createTables) {
+            // create() built them to choose the kernel's code: the same scene, one build.
+            samplerTables = std::move(*m_createTables);
+            m_createTables.reset();
+        } else {
+            auto tables = m_tablesCache.update(scene, m_options.sampler, changed);
+            if (!tables)
+                return tables.error();
+            samplerTables = std::move(tables.value());
+        }
         if (samplerTables.tables && samplerTables.tables->kind() == SamplerKind::Wavelet &&
             samplerTables.tables->anyProduct() && !m_productCompiled)
             return util::makeError(util::ErrorKind::Unsupported, "",

@@ -39,7 +39,7 @@ inline constexpr int kWaveletProductVertices = 1;
 // one is far wider than the other, and the material's vertices then estimate direct env light as
 // `mis` does (ProductMode::EnvMis; both tracers read the policy). Extents: the env's effective
 // solid angle (integral L)^2 / integral L^2, a mirror lobe's 2 pi (1 - cos half-width), the
-// clamped cosine's 1.5 pi. Env wider than kEnvMisSolidAngleRatio x the lobe: BSDF sampling follows
+// clamped cosine's 1.5 pi (hemisphere-wide lobes about the normal only: not a glossy measured table). Env wider than kEnvMisSolidAngleRatio x the lobe: BSDF sampling follows
 // the env across the lobe. Env narrower than 1/kEnvMisSolidAngleRatio of the lobe: env sampling
 // follows the integrand (the lobe is near constant across the env's light).
 inline constexpr double kEnvMisSolidAngleRatio = 16.0;

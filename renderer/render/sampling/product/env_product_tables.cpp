@@ -84,9 +84,12 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     if (brdf.lobeAxis() == plugins::BrdfLobeAxis::Normal) {
         p.aroundNormal = true;
         // The clamped cosine's effective solid angle, (integral cos)^2 / integral cos^2 = 1.5 pi.
+        // Only hemisphere-wide lobes (Lambert-type): a glossy table about the normal (measured)
+        // has a narrower lobe somewhere off the normal, which this extent does not describe.
         const double lobeSolidAngle = 1.5 * kPi;
         const double envSolidAngle = env.effectiveSolidAngle();
-        if (envSolidAngle * kEnvMisSolidAngleRatio < lobeSolidAngle) {
+        const bool hemisphereWide = brdf.lobeWidth(params).halfWidth >= 0.5 * kPi - 1e-9;
+        if (hemisphereWide && envSolidAngle * kEnvMisSolidAngleRatio < lobeSolidAngle) {
             p.mode = ProductMode::EnvMis;
             std::snprintf(why, sizeof why,
                           "env effective solid angle %.4g sr < 1/%g of the cosine lobe's %.4g sr: "
