@@ -78,5 +78,31 @@ TEST(WaveletEnvMisPolicy, AllEnvMisSceneRendersAsMisOnVulkanWithoutTheProductCod
                render(scene, SamplerKind::Mis, DeviceChoice::Vulkan));
 }
 
+// An edit that brings a product into a kernel compiled without the code answers Unsupported with
+// no file: the contract RenderSession recreates the tracer on (render_session.cpp), as for a BRDF
+// plugin the kernel lacks.
+TEST(WaveletEnvMisPolicy, AnEditThatNeedsTheProductCodeAsksForANewTracer) {
+    const auto scene = lambertUnderSun();
+    RenderOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.bounces = 2;
+    o.sampler = SamplerKind::Wavelet;
+    o.device = DeviceChoice::Vulkan;
+    o.validation = true;
+    auto gpu = createGpuPathTracer(scene, std::make_shared<const scene::Bvh>(scene::buildBvh(*scene)), o);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    // The same sky with a sun no brighter than its mean: the env spreads over steradians, the
+    // cosine lobe's product pays again (same plugin: only the product code is missing).
+    auto soft = std::make_shared<scene::Scene>(*scene);
+    soft->lighting.environment =
+        makeSunSkyEnvironment(64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1.0);
+    const auto status =
+        (*gpu)->setScene(soft, std::make_shared<const scene::Bvh>(scene::buildBvh(*soft)));
+    ASSERT_FALSE(status.ok());
+    EXPECT_EQ(status.error().kind, util::ErrorKind::Unsupported);
+    EXPECT_TRUE(status.error().file.empty());
+}
+
 } // namespace
 } // namespace wavelit::render

@@ -297,6 +297,10 @@ TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
     mat.roughness = 0.3f;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 24, 12);
     auto env = gradientEnvironment();
+    // A bright texel: the env's effective solid angle (~0.2 sr) stays within 16x of both
+    // roughnesses' lobes, so both are in product mode (ProductMode::EnvMis would leave the
+    // kernel without the product code, and the edit to a product would recreate the tracer).
+    env->at(5, 3) = glm::vec3(200.0f);
     scene->lighting.environment.image = env;
     RenderOptions options = testOptions(2, 16, 16);
     options.sampler = SamplerKind::Wavelet;
