@@ -181,6 +181,9 @@ void main() {
     // The vertex that drew `dir` estimated direct env light by NEE with `ds` (still its sampler:
     // set up per vertex, and an escaping ray sets up none).
     bool neeOfDir = false;
+    // ...and that technique was the env alone with `mis`'s weights (mis; wavelet past its product
+    // vertices or under the EnvMis policy): its pdf and radiance come from one texel lookup.
+    bool misNeeOfDir = false;
     DirSampler ds;
 #endif
     for (uint depth = 0u;; ++depth) {
@@ -195,7 +198,7 @@ void main() {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             // mis: one texel lookup gives both the radiance and the env technique's pdf.
-            if (neeOfDir && kind == kSamplerMis) {
+            if (neeOfDir && misNeeOfDir) {
                 uvec2 t = envExactTexel(ds.exactOffset, dir, ds.cosSinYaw);
                 w = powerHeuristic(scatterPdfOfDir, float(envExactTexelPdf(ds.exactOffset, t)));
                 vec3 escaped = beta * (w * envTexelRadiance(t));
@@ -277,8 +280,11 @@ void main() {
             vec2 ue = psNext2D(rng);
             float ue3 = psNext1D(rng);
             if (vertexNee) {
-                vec3 envDirect = beta * envNextEvent(ds, globals.kind == kSamplerEnv,
-                                                     kind == kSamplerMis, beta, brdfType,
+                // The env technique alone (mis, wavelet's env-only vertices, env): one texel
+                // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
+                bool envOnly = ds.cEnv == 1.0;
+                vec3 envDirect = beta * envNextEvent(ds, envOnly,
+                                                     envOnly && kind != kSamplerEnv, beta, brdfType,
                                                      mat.baseColorRoughness.rgb,
                                                      mat.baseColorRoughness.a, frame, wo, ng, next,
                                                      ue.x, ue.y, ue3, kind == kSamplerEnv,
@@ -321,6 +327,7 @@ void main() {
         scatterPdfOfDir = pdf;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         neeOfDir = vertexNee;
+        misNeeOfDir = kind != kSamplerEnv && ds.cEnv == 1.0;
 #endif
 
         if (int(depth) >= kRussianRouletteDepth) {

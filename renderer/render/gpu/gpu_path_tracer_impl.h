@@ -21,6 +21,7 @@
 #include "vk/context.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -139,6 +140,7 @@ private:
     // Direction-sampler tables, rebuilt per change set only where invalidated.
     SamplerTablesCache m_tablesCache;
     SceneSamplerTables m_samplerTables;
+    std::optional<SceneSamplerTables> m_createTables; // built by create(), used by its upload
     // What the uploaded sampler buffers need in the params block (GpuParams::samplerInfo/Env).
     uint32_t m_samplerInfo[4] = {0, 0, 0, 0};
     float m_samplerEnvMean = 0.0f;
@@ -149,6 +151,7 @@ private:
     vk::Buffer m_brdfTables;
     uint32_t m_brdfTableBinding = 0;
     bool m_brdfTablesCompiled = false; // the kernel reads measured tables (create)
+    bool m_productCompiled = false;    // the kernel carries the product code (create)
     BrdfPluginSet m_brdfPluginsCompiled = 0; // the BRDF twins the kernel carries (create)
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;

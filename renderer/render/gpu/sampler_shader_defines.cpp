@@ -58,6 +58,7 @@ std::vector<std::string> samplerShaderDefines() {
         defineUint("MODE_BSDF_ONLY", kGpuSamplerBsdfOnly),
         defineUint("MODE_PRODUCT", kGpuSamplerProduct),
         defineUint("MODE_BSDF_LOBE", kGpuSamplerBsdfLobe),
+        defineUint("MODE_ENV_MIS", kGpuSamplerEnvMis),
         defineUint("MODE_ORACLE", kGpuSamplerOracle),
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
