@@ -182,6 +182,7 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
       << "    \"pipelineSeconds\": " << s.timings.pipelineSeconds << ",\n"
       << "    \"passSeconds\": " << s.timings.passSeconds << ",\n"
       << "    \"secondsPerPass\": " << perPass << ",\n"
+      << "    \"productCacheBytes\": " << s.timings.productCacheBytes << ",\n"
       << "    \"totalSeconds\": " << totalSeconds << "\n"
       << "  },\n"
       << "  \"lastUpdate\": " << updateJson(s.lastUpdate) << ",\n"

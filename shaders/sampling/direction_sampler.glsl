@@ -141,8 +141,11 @@ float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int
 }
 #endif
 
-DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
-                   vec3 baseColor, float roughness) {
+// withProduct false (a literal: the inlined copy loses the product code): the kinds without a
+// product only — the `wavelet` path loop of a kernel with the per-pixel cache, whose product is
+// built by pcBuild alone (sampling/product_cache.glsl).
+DirSampler dsSetupWith(bool withProduct, SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo,
+                       uint brdfType, vec3 baseColor, float roughness) {
     DirSampler s;
     s.cProduct = 0.0;
     s.cBsdf = 0.0;
@@ -184,6 +187,10 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         return s;
     }
     // wavelet, oracle
+    if (!withProduct) {
+        s.cEnv = 1.0;
+        return s;
+    }
     if (sm.mode == kModeBsdfOnly) {
         s.cBsdf = 1.0;
         return s;
@@ -230,6 +237,11 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         s.cEnv = float(envShare);
     }
     return s;
+}
+
+DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
+                   vec3 baseColor, float roughness) {
+    return dsSetupWith(true, g, sm, frame, wo, brdfType, baseColor, roughness);
 }
 
 // The mixture's solid-angle pdf at world direction wi whose octahedral point (env-local) is p.

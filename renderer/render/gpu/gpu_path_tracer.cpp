@@ -116,6 +116,13 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (pt->m_brdfTablesCompiled)
         compile.defines.push_back(std::string(kBrdfTableBindingDefine) + "=" +
                                   std::to_string(pt->m_brdfTableBinding));
+    // The per-pixel cache of the camera vertex's product (product_cache.h): `wavelet` kernels
+    // with the product code, the binding after all others.
+    pt->m_productCacheBinding = pt->m_brdfTableBinding + (pt->m_brdfTablesCompiled ? 1u : 0u);
+    pt->m_productCacheCompiled = options.sampler == SamplerKind::Wavelet && pt->m_productCompiled;
+    if (pt->m_productCacheCompiled)
+        compile.defines.push_back("WAVELIT_PRODUCT_CACHE_BINDING=" +
+                                  std::to_string(pt->m_productCacheBinding));
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     pt->m_brdfPluginsCompiled = packed->brdfPlugins;
@@ -123,7 +130,7 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->m_brdfTableBinding + (pt->m_brdfTablesCompiled ? 1u : 0u),
+    std::vector<BindingKind> bindings(pt->m_productCacheBinding + (pt->m_productCacheCompiled ? 1u : 0u),
                                       BindingKind::StorageBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;

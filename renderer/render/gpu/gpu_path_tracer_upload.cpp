@@ -217,6 +217,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
             uploads[i].target->write(uploads[i].data, uploads[i].bytes);
     m_uploadedParams = d.params;
     m_samplerTables = std::move(samplerTables);
+    if (uploadSamplers)
+        m_packedSamplerMaterials = samplers.materials;
     std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
     m_samplerEnvMean = samplerEnvMean;
 
