@@ -83,8 +83,9 @@ void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCoun
     pcWriteVec3(at + 19u, wo);
 }
 
-// The camera vertex's NEE mixture of material m (cacheable mode): the pixel's entry when it
-// holds m, else `mis`'s technique (`fallback`: the env alone, set up by the caller's dsSetup).
+// The camera vertex's NEE mixture of material m (cacheable mode) from the pixel's entry at `at`;
+// false when the entry is missing or holds another material (the caller then sets up `mis`'s
+// technique, the env alone).
 bool pcLoad(uint at, uint m, SamplerGlobals g, uint brdfType, vec3 baseColor, float roughness,
             out DirSampler s) {
     if (at == kNoCacheEntry || productCache[at] != m) return false;
