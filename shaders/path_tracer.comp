@@ -38,6 +38,7 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
 layout(push_constant) uniform Pass {
     uint seedKey; // util::PathSampler::seedKey(options.seed)
     uint index;   // RenderOptions::firstPass + the passes since the last reset
+    uint buildCache; // 1: build the per-pixel product cache first (sampling/product_cache.glsl)
 } pass;
 
 struct BvhNode {
@@ -73,6 +74,10 @@ layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
 layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
 layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+// `wavelet` with a product: the camera vertex's mixture per pixel (sampling/product_cache.glsl).
+layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache { uint productCache[]; };
+#endif
 #include "sampling/direction_sampler.glsl"
 #endif
 
@@ -147,6 +152,9 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
 #ifdef WAVELIT_DIRECTION_SAMPLERS
 #include "sampling/env_nee.glsl"
 #endif
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+#include "sampling/product_cache.glsl"
+#endif
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -180,7 +188,27 @@ void main() {
                   kind == kSamplerOracle;
     // The vertex that drew `dir` estimated direct env light by NEE with `ds` (still its sampler:
     // set up per vertex, and an escaping ray sets up none).
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+    // The pixel's cached camera-vertex mixture, built in the first pass after a reset.
+    uint cacheAt = productCache[pixelIndex];
+    if (pass.buildCache != 0u && cacheAt != kNoCacheEntry && lit) {
+        SamplerGlobals cg;
+        cg.kind = kind;
+        cg.lit = true;
+        cg.tailOffset = params.samplerInfo.z;
+        cg.envLevel = int(params.samplerInfo.w);
+        cg.envMean = params.samplerEnv.x;
+        cg.cosSinYaw = params.envRotation.xy;
+        pcBuild(cacheAt, origin,
+                cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
+                                params.camForward.w, params.camRight.w, size, pixel, 0.5, 0.5),
+                cg, triangleCount, materialCount);
+    }
+#endif
     bool neeOfDir = false;
+    // ...and that technique was the env alone with `mis`'s weights (mis; wavelet past its product
+    // vertices or under the EnvMis policy): its pdf and radiance come from one texel lookup.
+    bool misNeeOfDir = false;
     DirSampler ds;
 #endif
     for (uint depth = 0u;; ++depth) {
@@ -195,7 +223,7 @@ void main() {
             float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             // mis: one texel lookup gives both the radiance and the env technique's pdf.
-            if (neeOfDir && kind == kSamplerMis) {
+            if (neeOfDir && misNeeOfDir) {
                 uvec2 t = envExactTexel(ds.exactOffset, dir, ds.cosSinYaw);
                 w = powerHeuristic(scatterPdfOfDir, float(envExactTexelPdf(ds.exactOffset, t)));
                 vec3 escaped = beta * (w * envTexelRadiance(t));
@@ -252,9 +280,26 @@ void main() {
         globals.envMean = params.samplerEnv.x;
         globals.cosSinYaw = params.envRotation.xy;
         bool vertexNee = envNee && lit;
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+        // wavelet: the camera vertex of a product material draws from the pixel's cached
+        // mixture (its centre hit the same material), every other vertex (and a camera vertex
+        // the cache does not hold) uses `mis`'s technique — bsdf alone for a material without
+        // tables, as dsSetup would; the product code lives in pcBuild alone.
+        if (vertexNee) {
+            SamplerMaterial sm = samplerMaterials[m];
+            if (!(depth == 0u && pcCacheableMode(sm.mode) &&
+                  pcLoad(cacheAt, m, globals, brdfType, mat.baseColorRoughness.rgb,
+                         mat.baseColorRoughness.a, ds))) {
+                globals.kind = depth == 0u && sm.mode == kModeBsdfOnly ? kSamplerBsdf : kSamplerEnv;
+                ds = dsSetupWith(false, globals, sm, frame, wo, brdfType,
+                                 mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
+            }
+        }
+#else
         if (continuationFromSampler || vertexNee)
             ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
                          mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
+#endif
 #endif
         if (lightCount > 0u) {
             float uSelect = psNext1D(rng);
@@ -277,8 +322,11 @@ void main() {
             vec2 ue = psNext2D(rng);
             float ue3 = psNext1D(rng);
             if (vertexNee) {
-                vec3 envDirect = beta * envNextEvent(ds, globals.kind == kSamplerEnv,
-                                                     kind == kSamplerMis, beta, brdfType,
+                // The env technique alone (mis, wavelet's env-only vertices, env): one texel
+                // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
+                bool envOnly = ds.cEnv == 1.0;
+                vec3 envDirect = beta * envNextEvent(ds, envOnly,
+                                                     envOnly && kind != kSamplerEnv, beta, brdfType,
                                                      mat.baseColorRoughness.rgb,
                                                      mat.baseColorRoughness.a, frame, wo, ng, next,
                                                      ue.x, ue.y, ue3, kind == kSamplerEnv,
@@ -321,6 +369,7 @@ void main() {
         scatterPdfOfDir = pdf;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         neeOfDir = vertexNee;
+        misNeeOfDir = kind != kSamplerEnv && ds.cEnv == 1.0;
 #endif
 
         if (int(depth) >= kRussianRouletteDepth) {

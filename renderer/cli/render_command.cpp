@@ -68,7 +68,12 @@ std::string jsonEscape(const std::string& s) {
 const char* productModeName(const render::MaterialProductTables* t) {
     if (!t)
         return "none";
-    return t->policy().mode == render::ProductMode::Product ? "product" : "bsdf-lobe";
+    switch (t->policy().mode) {
+    case render::ProductMode::Product: return "product";
+    case render::ProductMode::BsdfLobe: return "bsdf-lobe";
+    case render::ProductMode::EnvMis: return "env-mis";
+    }
+    return "none";
 }
 
 // The direction samplers' tables (architecture.md §7: what was built for this scene and why), or null
@@ -177,6 +182,7 @@ std::string reportJson(const std::string& scenePath, const std::string& output,
       << "    \"pipelineSeconds\": " << s.timings.pipelineSeconds << ",\n"
       << "    \"passSeconds\": " << s.timings.passSeconds << ",\n"
       << "    \"secondsPerPass\": " << perPass << ",\n"
+      << "    \"productCacheBytes\": " << s.timings.productCacheBytes << ",\n"
       << "    \"totalSeconds\": " << totalSeconds << "\n"
       << "  },\n"
       << "  \"lastUpdate\": " << updateJson(s.lastUpdate) << ",\n"

@@ -11,6 +11,8 @@
 //                           (product/env_product_sampler.glsl); mixed with bsdf (the policy's
 //                           share) and env by the CPU's share rule and constants.
 //                           Lobes the env cannot resolve (policy BsdfLobe): bsdf + env.
+//                           Lobes far narrower than the env's spread (policy EnvMis): the env
+//                           alone, MIS-weighted by the tracer against the BSDF, as `mis`.
 //   oracle                  per hit: a dense product over a window fitted to the lobe around the
 //                           exact axis (oracle_sampler.glsl), mixed as the CPU's oracle. Compiled
 //                           with WAVELIT_ORACLE_SAMPLER (its private pyramid is 4x the wavelet's).
@@ -52,6 +54,7 @@ const uint kModeBsdfOnly = WAVELIT_MODE_BSDF_ONLY;
 const uint kModeProduct = WAVELIT_MODE_PRODUCT;
 const uint kModeBsdfLobe = WAVELIT_MODE_BSDF_LOBE;
 const uint kModeOracle = WAVELIT_MODE_ORACLE;
+const uint kModeEnvMis = WAVELIT_MODE_ENV_MIS;
 
 float luminanceOf(vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
@@ -138,8 +141,11 @@ float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int
 }
 #endif
 
-DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
-                   vec3 baseColor, float roughness) {
+// withProduct false (a literal: the inlined copy loses the product code): the kinds without a
+// product only — the `wavelet` path loop of a kernel with the per-pixel cache, whose product is
+// built by pcBuild alone (sampling/product_cache.glsl).
+DirSampler dsSetupWith(bool withProduct, SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo,
+                       uint brdfType, vec3 baseColor, float roughness) {
     DirSampler s;
     s.cProduct = 0.0;
     s.cBsdf = 0.0;
@@ -181,8 +187,16 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         return s;
     }
     // wavelet, oracle
+    if (!withProduct) {
+        s.cEnv = 1.0;
+        return s;
+    }
     if (sm.mode == kModeBsdfOnly) {
         s.cBsdf = 1.0;
+        return s;
+    }
+    if (sm.mode == kModeEnvMis) { // policy EnvMis: `mis`'s NEE technique, the env alone
+        s.cEnv = 1.0;
         return s;
     }
     vec3 nWorld = frame.n, woWorld = frameToWorld(frame, wo);
@@ -223,6 +237,11 @@ DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, u
         s.cEnv = float(envShare);
     }
     return s;
+}
+
+DirSampler dsSetup(SamplerGlobals g, SamplerMaterial sm, Frame frame, vec3 wo, uint brdfType,
+                   vec3 baseColor, float roughness) {
+    return dsSetupWith(true, g, sm, frame, wo, brdfType, baseColor, roughness);
 }
 
 // The mixture's solid-angle pdf at world direction wi whose octahedral point (env-local) is p.

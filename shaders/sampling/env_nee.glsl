@@ -5,7 +5,8 @@
 // - an env-only technique (mis, env, wavelet past its product vertices) draws its texel and reads
 //   the pdf and the radiance at the ONE texel of the drawn float direction: the same numbers as
 //   dsSample + envRadiance, one equirect lookup (two atans) instead of two;
-// - `mis` plays Russian roulette with the shadow ray (WAVELIT_MIS_ENV_ROULETTE).
+// - `mis` plays Russian roulette with the shadow ray (WAVELIT_MIS_ENV_ROULETTE), and so do `wavelet`'s
+//   env-only vertices (past its product vertices, EnvMis materials): their NEE is `mis`'s.
 #ifndef WAVELIT_ENV_NEE_GLSL
 #define WAVELIT_ENV_NEE_GLSL
 

@@ -33,7 +33,7 @@ struct DirSampler {
     float cProduct, cBsdf, cEnv, cUniform, cCosine; // mixture weights (sum 1)
     int k, ox, oy, m;                               // product window and level
     int refineLevels;                               // lobe refinement levels below the leaves
-    int massOffset; // word offset of a precomputed pyramid in samplerWords; < 0: the private one
+    int massOffset; // word offset of a precomputed pyramid in samplerWords; -1: the private one; <= -2: the pixel's cached one
     Frame frame;
     vec3 wo; // shading-local
     uint brdfType;

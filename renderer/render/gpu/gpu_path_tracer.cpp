@@ -79,7 +79,18 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     }
     // The product code (private pyramid, descents) only for the kinds that draw from a product:
     // carried as dead code it cost `mis` ~40% of a lavapipe pass (docs/performance.md, issue 12).
-    if (options.sampler == SamplerKind::Wavelet || options.sampler == SamplerKind::Oracle)
+    // A `wavelet` scene whose every material's policy is EnvMis or BsdfLobe (docs/performance.md
+    // "Wavelet pass cost, round 3") draws from no product: its kernel is compiled without the
+    // code, and an edit that brings a product recreates the tracer (uploadScene: Unsupported).
+    pt->m_productCompiled = options.sampler == SamplerKind::Oracle;
+    if (options.sampler == SamplerKind::Wavelet) {
+        auto tables = pt->m_tablesCache.update(*pt->m_scene, options.sampler);
+        if (!tables)
+            return tables.error();
+        pt->m_productCompiled = tables->tables && tables->tables->anyProduct();
+        pt->m_createTables = std::move(tables.value());
+    }
+    if (pt->m_productCompiled)
         compile.defines.push_back("WAVELIT_PRODUCT_SAMPLER=1");
     // Only the oracle needs the larger private pyramid (2^5 leaves instead of the wavelet's).
     if (options.sampler == SamplerKind::Oracle)
@@ -105,6 +116,13 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (pt->m_brdfTablesCompiled)
         compile.defines.push_back(std::string(kBrdfTableBindingDefine) + "=" +
                                   std::to_string(pt->m_brdfTableBinding));
+    // The per-pixel cache of the camera vertex's product (product_cache.h): `wavelet` kernels
+    // with the product code, the binding after all others.
+    pt->m_productCacheBinding = pt->m_brdfTableBinding + (pt->m_brdfTablesCompiled ? 1u : 0u);
+    pt->m_productCacheCompiled = options.sampler == SamplerKind::Wavelet && pt->m_productCompiled;
+    if (pt->m_productCacheCompiled)
+        compile.defines.push_back("WAVELIT_PRODUCT_CACHE_BINDING=" +
+                                  std::to_string(pt->m_productCacheBinding));
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     pt->m_brdfPluginsCompiled = packed->brdfPlugins;
@@ -112,7 +130,7 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->m_brdfTableBinding + (pt->m_brdfTablesCompiled ? 1u : 0u),
+    std::vector<BindingKind> bindings(pt->m_productCacheBinding + (pt->m_productCacheCompiled ? 1u : 0u),
                                       BindingKind::StorageBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;

@@ -21,6 +21,7 @@
 #include "vk/context.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ std::vector<uint32_t> packGpuLightGroups(const LightGroups& groups, uint64_t pix
 struct PassPush {
     uint32_t seedKey; // util::PathSampler::seedKey(options.seed)
     uint32_t pass;
+    uint32_t buildCache = 0; // 1: the pass first fills the per-pixel product cache (product_cache.h)
 };
 
 // The buffers of a scene in upload order, sized as uploadScene creates them (render_limits.h).
@@ -87,6 +89,9 @@ public:
                               std::shared_ptr<const scene::Bvh> bvh,
                               const scene::ChangeSet& changes) override;
     UpdateCounts lastUpdate() const override { return m_lastUpdate; }
+    // How often the per-pixel product cache was laid out and built (tests: rebuilt after edits).
+    uint64_t productCacheBuilds() const { return m_productCacheBuilds; }
+    uint64_t productCacheBytes() const { return m_productCache.size(); }
 
 private:
     GpuPathTracer() = default;
@@ -115,6 +120,11 @@ private:
     // Checks the accumulation buffer and `buffers` against the device's limits before any of
     // them is allocated (render_limits.h).
     util::Status checkPlan(std::vector<GpuBufferPlan> buffers) const;
+    // The per-pixel product cache (`wavelet` kernels with the product code; product_cache.h):
+    // lays it out for the current scene and camera and uploads the layout, so that the next pass
+    // builds the entries (gpu_path_tracer_cache.cpp). Called at a pass's first piece while the
+    // cache is not ready; resetAccumulation (every scene or camera change) makes it not ready.
+    util::Status prepareProductCache();
     // A pass is cut into tiles of kTileGroups x kTileGroups workgroups (16 x 16 pixels), taken
     // in a scattered order (tile i of the order is i * stride mod count) so that every piece
     // samples the whole image: a piece's cost then follows its tile count, whereas runs in
@@ -139,6 +149,7 @@ private:
     // Direction-sampler tables, rebuilt per change set only where invalidated.
     SamplerTablesCache m_tablesCache;
     SceneSamplerTables m_samplerTables;
+    std::optional<SceneSamplerTables> m_createTables; // built by create(), used by its upload
     // What the uploaded sampler buffers need in the params block (GpuParams::samplerInfo/Env).
     uint32_t m_samplerInfo[4] = {0, 0, 0, 0};
     float m_samplerEnvMean = 0.0f;
@@ -149,6 +160,16 @@ private:
     vk::Buffer m_brdfTables;
     uint32_t m_brdfTableBinding = 0;
     bool m_brdfTablesCompiled = false; // the kernel reads measured tables (create)
+    bool m_productCompiled = false;    // the kernel carries the product code (create)
+    // The per-pixel product cache: its binding (the last), whether the kernel has it, the packed
+    // sampler materials it is laid out from, its state and figures for the report.
+    vk::Buffer m_productCache;
+    uint32_t m_productCacheBinding = 0;
+    bool m_productCacheCompiled = false;
+    std::vector<GpuSamplerMaterial> m_packedSamplerMaterials;
+    bool m_productCacheReady = false;  // entries built for the current scene and camera
+    bool m_productCacheBuilding = false; // the pass in progress builds them
+    uint64_t m_productCacheBuilds = 0;
     BrdfPluginSet m_brdfPluginsCompiled = 0; // the BRDF twins the kernel carries (create)
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;

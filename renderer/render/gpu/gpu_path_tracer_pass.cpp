@@ -10,8 +10,13 @@
 namespace wavelit::render::gpu_tracer {
 
 util::Status GpuPathTracer::renderPass() {
+    if (m_productCacheCompiled && !m_productCacheReady && m_nextTile == 0) {
+        if (auto status = prepareProductCache(); !status)
+            return status;
+        m_productCacheBuilding = true;
+    }
     const PassPush push{util::PathSampler::seedKey(m_options.seed),
-                        uint32_t(m_options.firstPass + m_passes)};
+                        uint32_t(m_options.firstPass + m_passes), m_productCacheBuilding ? 1u : 0u};
     const PassTiles tiles = passTiles();
     // Until a piece has been timed, a small first piece: 4 tiles (1024 pixels) take ~45 ms with
     // `wavelet` on lavapipe under load (a 1600x1000 pass took 71 s), the slowest sampler but the
@@ -36,6 +41,10 @@ util::Status GpuPathTracer::renderPass() {
         m_nextTile += count;
     }
     m_nextTile = 0;
+    if (m_productCacheBuilding) {
+        m_productCacheBuilding = false;
+        m_productCacheReady = true;
+    }
     ++m_passes;
     m_timings.passSeconds += m_passElapsed;
     m_passElapsed = 0.0;
@@ -90,6 +99,9 @@ void GpuPathTracer::resetAccumulation() {
     if (m_groupLayers.handle() != VK_NULL_HANDLE) m_groupLayers.fill(0);
     m_passes = 0;
     m_nextTile = 0; // an unfinished pass is dropped with the sums it had added
+    // Every scene or camera change resets: the cached camera-vertex products are rebuilt.
+    m_productCacheReady = false;
+    m_productCacheBuilding = false;
     m_passElapsed = 0.0;
     m_timings.passSeconds = 0.0;
 }

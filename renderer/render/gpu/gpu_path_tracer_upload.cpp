@@ -100,10 +100,20 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     float samplerEnvMean = m_samplerEnvMean;
     const SamplerTablesRebuilds rebuildsBefore = m_tablesCache.rebuilds();
     if (usesDirectionSamplers()) {
-        auto tables = m_tablesCache.update(scene, m_options.sampler, changed);
-        if (!tables)
-            return tables.error();
-        samplerTables = std::move(tables.value());
+        if (m_createTables) {
+            // create() built them to choose the kernel's code: the same scene, one build.
+            samplerTables = std::move(*m_createTables);
+            m_createTables.reset();
+        } else {
+            auto tables = m_tablesCache.update(scene, m_options.sampler, changed);
+            if (!tables)
+                return tables.error();
+            samplerTables = std::move(tables.value());
+        }
+        if (samplerTables.tables && samplerTables.tables->kind() == SamplerKind::Wavelet &&
+            samplerTables.tables->anyProduct() && !m_productCompiled)
+            return util::makeError(util::ErrorKind::Unsupported, "",
+                                   "the kernel was compiled without the wavelet product code");
         // The cache hands back the same tables when an edit invalidated none of them (an object
         // move, a light edit): the sampler buffers on the device are then still right, and
         // re-packing them (the env table alone is ~22 MiB at 1024^2) would stall every drag.
@@ -207,6 +217,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
             uploads[i].target->write(uploads[i].data, uploads[i].bytes);
     m_uploadedParams = d.params;
     m_samplerTables = std::move(samplerTables);
+    if (uploadSamplers)
+        m_packedSamplerMaterials = samplers.materials;
     std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
     m_samplerEnvMean = samplerEnvMean;
 

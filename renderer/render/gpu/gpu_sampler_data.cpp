@@ -81,6 +81,10 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 g.mode = kGpuSamplerBsdfLobe;
                 continue;
             }
+            if (policy.mode == ProductMode::EnvMis) {
+                g.mode = kGpuSamplerEnvMis;
+                continue;
+            }
             if (policy.productLevel < 1)
                 return util::makeError(util::ErrorKind::Unsupported, "",
                                        "material '" + t.material(size_t(index)).name +

@@ -30,6 +30,7 @@ inline constexpr uint32_t kGpuSamplerBsdfOnly = 0;
 inline constexpr uint32_t kGpuSamplerProduct = 1;
 inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
 inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense product
+inline constexpr uint32_t kGpuSamplerEnvMis = 4; // ProductMode::EnvMis: `mis`'s env NEE technique
 // The finest product level the shader forms per hit: 2^4 x 2^4 leaves, where the CPU's product
 // (ProductPolicy::productLevel) has 2^5. The GPU keeps its pyramid in private memory and pays
 // ~4^m x 4 BRDF evaluations per hit, so finer table details are not synthesised there: the lobe

@@ -28,6 +28,14 @@ TEST(GpuSamplerData, OnlyHemisphereWideLobesAboutTheNormalReadThePrecomputedPyra
     image->at(40, 30) = glm::vec3(1e4f); // a small bright source: the env is lit and uneven
     scene::Environment env;
     env.image = image;
+    // The cosine lobe keeps its product only under an env at least 1/16 as wide as itself
+    // (ProductMode::EnvMis, kEnvMisSolidAngleRatio): a bright upper half for the Lambert case.
+    auto softImage = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 256; ++x)
+            softImage->at(x, y) = glm::vec3(1.0f);
+    scene::Environment softEnv;
+    softEnv.image = softImage;
     auto table = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
                                        "/brdfs/glossy-copper-r05.binary");
     ASSERT_TRUE(table.ok()) << table.error().message();
@@ -48,22 +56,47 @@ TEST(GpuSamplerData, OnlyHemisphereWideLobesAboutTheNormalReadThePrecomputedPyra
         {{"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}}, false,
          kWaveletBsdfShare},
     };
-    std::vector<SamplerMaterial> materials;
+    for (const bool soft : {true, false}) {
+        std::vector<SamplerMaterial> materials;
+        std::vector<const Expect*> expects;
+        SceneSamplerTables scene;
+        for (const Expect& c : cases) {
+            if ((c.material.name == "lambert") != soft)
+                continue;
+            scene.samplerIndexOfMaterial.push_back(int(materials.size()));
+            materials.push_back(c.material);
+            expects.push_back(&c);
+        }
+        scene.tables = DirectionSamplerTables::build(soft ? softEnv : env, materials,
+                                                     SamplerKind::Wavelet);
+        auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, materials.size());
+        ASSERT_TRUE(packed.ok()) << packed.error().message();
+        for (size_t i = 0; i < expects.size(); ++i) {
+            const GpuSamplerMaterial& g = packed->materials[i];
+            SCOPED_TRACE(expects[i]->material.name);
+            ASSERT_EQ(g.mode, kGpuSamplerProduct);
+            EXPECT_EQ(g.precomputedBins > 0, expects[i]->readsPyramids);
+            EXPECT_FLOAT_EQ(g.mixBsdf, float(expects[i]->mixBsdf));
+        }
+    }
+}
+
+// The same Lambert lobe under the spiky env, whose light sits in one texel: env sampling follows
+// the integrand, so the policy is EnvMis, packed as such with no tables of its own.
+TEST(GpuSamplerData, ALambertLobeUnderASunIsPackedEnvMis) {
+    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    image->at(40, 30) = glm::vec3(1e4f);
+    scene::Environment env;
+    env.image = image;
     SceneSamplerTables scene;
-    for (const Expect& c : cases) {
-        scene.samplerIndexOfMaterial.push_back(int(materials.size()));
-        materials.push_back(c.material);
-    }
-    scene.tables = DirectionSamplerTables::build(env, materials, SamplerKind::Wavelet);
-    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, cases.size());
+    scene.samplerIndexOfMaterial = {0};
+    scene.tables = DirectionSamplerTables::build(
+        env, {{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}}, SamplerKind::Wavelet);
+    EXPECT_FALSE(scene.tables->anyProduct());
+    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, 1);
     ASSERT_TRUE(packed.ok()) << packed.error().message();
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const GpuSamplerMaterial& g = packed->materials[i];
-        SCOPED_TRACE(cases[i].material.name);
-        ASSERT_EQ(g.mode, kGpuSamplerProduct);
-        EXPECT_EQ(g.precomputedBins > 0, cases[i].readsPyramids);
-        EXPECT_FLOAT_EQ(g.mixBsdf, float(cases[i].mixBsdf));
-    }
+    EXPECT_EQ(packed->materials[0].mode, kGpuSamplerEnvMis);
+    EXPECT_EQ(packed->materials[0].precomputedBins, 0u);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "render/gpu/gpu_sampler_data.h"
 #include "render/gpu/precomputed_products.h"
+#include "render/gpu/product_cache.h"
 #include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_window.h"
@@ -58,12 +59,14 @@ std::vector<std::string> samplerShaderDefines() {
         defineUint("MODE_BSDF_ONLY", kGpuSamplerBsdfOnly),
         defineUint("MODE_PRODUCT", kGpuSamplerProduct),
         defineUint("MODE_BSDF_LOBE", kGpuSamplerBsdfLobe),
+        defineUint("MODE_ENV_MIS", kGpuSamplerEnvMis),
         defineUint("MODE_ORACLE", kGpuSamplerOracle),
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
         define("MIS_ENV_ROULETTE", floatLiteral(kMisEnvRoulette)),
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
         define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
+        define("PRODUCT_CACHE_HEADER_WORDS", int(GpuProductCacheLayout::kHeaderWords)),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),
         define("ORACLE_MIN_ENV_SHARE", doubleLiteral(kOracleMinEnvShare)),
         define("MAX_ENV_SHARE", doubleLiteral(kMaxEnvShare)),

@@ -219,9 +219,11 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
         m_options.sampler == SamplerKind::Env ? 0.0f : mat.brdf->pdf(mat.params, wo, wi);
     const float w = m_options.sampler == SamplerKind::Env ? 1.0f : powerWeight(d.pdf, bsdfPdf);
     float scale = wi.z * w / d.pdf;
-    // `mis`: Russian roulette on the shadow ray (sampler_constants.h kMisEnvRoulette; env_nee.glsl
-    // is the twin), u3 its coin: the env technique alone draws no technique with it.
-    if (m_options.sampler == SamplerKind::Mis) {
+    // `mis`'s Russian roulette on the shadow ray (sampler_constants.h kMisEnvRoulette; env_nee.glsl
+    // is the twin) wherever the NEE is `mis`'s technique: `mis`, and `wavelet` past its product
+    // vertices and under the EnvMis policy. u3 its coin: the env technique alone draws no
+    // technique with it.
+    if (m_options.sampler != SamplerKind::Env && nee.envAlone()) {
         const glm::vec3 bf = beta * f;
         const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / float(kMisEnvRoulette);
         if (p < 1.0f) {

@@ -158,6 +158,15 @@ private:
                            std::vector<PathEvent>* events, int vertex,
                            const glm::vec3& beta) const;
 
+    // `wavelet`'s env NEE technique at a path's camera vertex (depth 0) of pixel (x, y), into
+    // `ds` (cpu_camera_nee.cpp): for a material whose policy forms a product (Product,
+    // BsdfLobe), the mixture built at the pixel CENTRE's hit when that hit has the same
+    // material, else `mis`'s (the env alone); other materials as at any vertex. The Vulkan
+    // tracer caches that mixture per pixel across passes (shaders/sampling/product_cache.glsl);
+    // this twin rebuilds it per path, the same estimator.
+    void cameraNeeSampler(std::optional<DirectionSampler>& ds, int x, int y,
+                          const ResolvedMaterial& mat, const ShadingPoint& here) const;
+
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
     RenderOptions m_options;

@@ -130,9 +130,13 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         // sample. `bsdf`: none.
         std::optional<DirectionSampler> ds;
         if (m_samplerTables && mat.samplerIndex >= 0 &&
-            (continuationFromSampler(kind) || (envNee && lit)))
-            ds.emplace(*m_samplerTables, vertexSamplerKind(kind, depth),
-                       ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
+            (continuationFromSampler(kind) || (envNee && lit))) {
+            const ShadingPoint here{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)};
+            if (kind == SamplerKind::Wavelet && depth == 0)
+                cameraNeeSampler(ds, x, y, mat, here);
+            else
+                ds.emplace(*m_samplerTables, vertexSamplerKind(kind, depth), here);
+        }
         const DirectionSampler* sampler = ds && continuationFromSampler(kind) ? &*ds : nullptr;
         const DirectionSampler* neeSampler = ds && envNee ? &*ds : nullptr;
 

@@ -97,6 +97,13 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             return;
         }
         const ProductPolicy& policy = tables->policy();
+        if (policy.mode == ProductMode::EnvMis) {
+            // `mis`'s NEE technique: the env alone (the tracer MIS-weights it against the BSDF
+            // continuation, as at a `wavelet` path's deeper vertices).
+            m_components = {{Technique::Env, 1.0}};
+            m_describe = "wavelet, env mis: " + policy.reason;
+            return;
+        }
         bsdfShare = policy.mixBsdf;
         capAngle = policy.capHalfAngle;
         if (policy.mode == ProductMode::BsdfLobe) {

@@ -108,6 +108,11 @@ public:
     std::vector<ComponentPdf> componentPdfs(const glm::vec3& wi) const;
     // What this sampler does at this point and why (for the render report).
     std::string describe() const;
+    // The env technique alone (`env`, `mis`'s NEE, `wavelet` past its product vertices or under
+    // the EnvMis policy): the tracers play `mis`'s shadow-ray roulette on such NEE draws.
+    bool envAlone() const {
+        return m_components.size() == 1 && m_components[0].technique == Technique::Env;
+    }
 
     // f(wo, wi) cos(theta_i) as RGB, the BRDF part of the integrand (0 below the surface).
     glm::vec3 brdfCos(const glm::vec3& wi) const;

@@ -73,6 +73,13 @@ const MaterialProductTables* DirectionSamplerTables::productTables(size_t i) con
     return i < m_products.size() ? m_products[i].get() : nullptr;
 }
 
+bool DirectionSamplerTables::anyProduct() const {
+    for (const auto& p : m_products)
+        if (p && p->policy().mode == ProductMode::Product)
+            return true;
+    return false;
+}
+
 bool DirectionSamplerTables::productTablesReused(size_t i) const {
     return i < m_productReused.size() && m_productReused[i];
 }

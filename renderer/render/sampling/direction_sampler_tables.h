@@ -53,6 +53,9 @@ public:
     size_t materialCount() const { return m_materials.size(); }
     // nullptr unless kind == Wavelet.
     const MaterialProductTables* productTables(size_t i) const;
+    // Whether some material's vertices draw from a per-hit product (policy mode Product): a
+    // Vulkan kernel of tables without one is compiled without the product code (issue 12).
+    bool anyProduct() const;
     // Whether build() took the piece from `previous` instead of building it (false without one).
     bool environmentReused() const { return m_envReused; }
     bool productTablesReused(size_t i) const;

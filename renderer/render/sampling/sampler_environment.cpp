@@ -133,6 +133,16 @@ SamplerEnvironment SamplerEnvironment::build(const scene::Environment& env,
                 coarse.at(x, y) = 0.25 * (fine.at(2 * x, 2 * y) + fine.at(2 * x + 1, 2 * y) +
                                           fine.at(2 * x, 2 * y + 1) + fine.at(2 * x + 1, 2 * y + 1));
     }
+    {
+        // Equal-area texels: every one covers 4 pi / N^2 sr.
+        double sum = 0.0, sumSquares = 0.0;
+        for (double v : grid.values) {
+            sum += v;
+            sumSquares += v * v;
+        }
+        const double texelSolidAngle = 4.0 * kPi / double(grid.values.size());
+        s.m_effectiveSolidAngle = sumSquares > 0.0 ? texelSolidAngle * sum * sum / sumSquares : 0.0;
+    }
     s.m_exact = EquirectEnvSampler::build(env);
     s.m_lookup.emplace(env);
     if (s.m_mips[0].at(0, 0) > 0.0 && s.m_exact.hasLight()) {

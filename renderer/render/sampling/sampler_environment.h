@@ -61,6 +61,10 @@ public:
     double pdfWorld(const glm::vec3& wi) const;
     double pdfLocal(const glm::dvec3& local) const { return pdfWorld(glm::vec3(toWorld(local))); }
     const EquirectEnvSampler& exact() const { return m_exact; }
+    // (integral of L)^2 / integral of L^2 over the sphere, in sr, on the conservative luminance
+    // map: 4 pi for a constant env, ~ a sun's solid angle when the sun holds the light. What the
+    // `wavelet` policy weighs against a lobe's solid angle (chooseProductPolicy).
+    double effectiveSolidAngle() const { return m_effectiveSolidAngle; }
 
     size_t bytes() const; // sampling tables + pyramid
     double buildSeconds() const { return m_buildSeconds; }
@@ -73,6 +77,7 @@ private:
     EquirectEnvSampler m_exact;
     std::optional<CpuEnvironment> m_lookup;
     double m_cosYaw = 1.0, m_sinYaw = 0.0;
+    double m_effectiveSolidAngle = 0.0;
     double m_buildSeconds = 0.0;
 };
 

@@ -9,6 +9,7 @@
 #include "util/image.h"
 #include "util/result.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,6 +27,9 @@ struct IntegratorTimings {
     double uploadSeconds = 0.0;
     double pipelineSeconds = 0.0; // shader compile + pipeline creation (GPU only)
     double passSeconds = 0.0;     // sum over passes since the last reset
+    // Memory, not time, reported beside: the Vulkan `wavelet` tracer's per-pixel product cache
+    // (render/gpu/product_cache.h), in bytes; 0 without one.
+    uint64_t productCacheBytes = 0;
 };
 
 // Polled by an integrator between the pieces of a pass; true: return from renderPass now.

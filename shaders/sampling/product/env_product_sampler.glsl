@@ -26,9 +26,19 @@ const int kPyramidLevel = WAVELIT_MAX_PRODUCT_LEVEL;
 float gMass[((1 << (2 * (kPyramidLevel + 1))) - 1) / 3];
 int gNode[((1 << (2 * WAVELIT_MAX_PRODUCT_LEVEL)) - 1) / 3];
 
-// Cell i of the hit's pyramid: a normal bin's precomputed one (dsSetupWavelet) or the private one.
+// massOffset at or below this: the pyramid lies in the per-pixel product cache at word
+// kMassInProductCache - massOffset (sampling/product_cache.glsl).
+const int kMassInProductCache = -2;
+
+// Cell i of the hit's pyramid: a normal bin's precomputed one (dsSetupWavelet), the pixel's
+// cached one (the camera vertex, product_cache.glsl) or the private one.
 float dsMass(DirSampler s, int i) {
-    return s.massOffset >= 0 ? uintBitsToFloat(samplerWords[uint(s.massOffset + i)]) : gMass[i];
+    if (s.massOffset >= 0) return uintBitsToFloat(samplerWords[uint(s.massOffset + i)]);
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+    if (s.massOffset <= kMassInProductCache)
+        return uintBitsToFloat(productCache[uint(kMassInProductCache - s.massOffset + i)]);
+#endif
+    return gMass[i];
 }
 
 // Sums the leaves (level m) of gMass up to its root; returns the total.

@@ -75,7 +75,7 @@ double binRadius(const wavelet::OctahedralMap& map, int b, int x, int y, glm::dv
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env) {
     ProductPolicy p;
-    char why[200];
+    char why[320];
     if (!env.hasLight()) {
         p.mode = ProductMode::BsdfLobe;
         p.reason = "black environment: nothing to sample but the BSDF";
@@ -83,6 +83,22 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     }
     if (brdf.lobeAxis() == plugins::BrdfLobeAxis::Normal) {
         p.aroundNormal = true;
+        // The clamped cosine's effective solid angle, (integral cos)^2 / integral cos^2 = 1.5 pi.
+        // Only hemisphere-wide lobes (Lambert-type): a glossy table about the normal (measured)
+        // has a narrower lobe somewhere off the normal, which this extent does not describe.
+        const double lobeSolidAngle = 1.5 * kPi;
+        const double envSolidAngle = env.effectiveSolidAngle();
+        const bool hemisphereWide = brdf.lobeWidth(params).halfWidth >= 0.5 * kPi - 1e-9;
+        if (hemisphereWide && envSolidAngle * kEnvMisSolidAngleRatio < lobeSolidAngle) {
+            p.mode = ProductMode::EnvMis;
+            std::snprintf(why, sizeof why,
+                          "env effective solid angle %.4g sr < 1/%g of the cosine lobe's %.4g sr: "
+                          "env sampling follows the integrand (the cosine is near constant across "
+                          "the env's light), so the vertex uses mis's env NEE (no product)",
+                          envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle);
+            p.reason = why;
+            return p;
+        }
         p.lobeHalfWidth = brdf.lobeWidth(params).halfWidth;
         p.capHalfAngle = kPi;
         p.binLevel = 0;
@@ -92,8 +108,12 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.mixBsdf = kMixBsdf;
         p.refineCellAngle = kRefineCellPerLobe * p.lobeHalfWidth;
         p.refineMaxLevels = kRefineMaxLevels;
-        p.reason = "diffuse: env x clamped cosine around the normal over the whole sphere, 32^2, "
-                   "refined by the env pyramid";
+        std::snprintf(why, sizeof why,
+                      "diffuse: env x clamped cosine around the normal over the whole sphere, "
+                      "32^2, refined by the env pyramid; env effective solid angle %.4g sr >= 1/%g "
+                      "of the cosine lobe's %.4g sr",
+                      envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle);
+        p.reason = why;
         return p;
     }
     const plugins::BrdfLobeWidth lobe = brdf.lobeWidth(params);
@@ -111,6 +131,18 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.reason = why;
         return p;
     }
+    const double lobeSolidAngle = 2.0 * kPi * (1.0 - std::cos(p.lobeHalfWidth));
+    const double envSolidAngle = env.effectiveSolidAngle();
+    if (envSolidAngle > kEnvMisSolidAngleRatio * lobeSolidAngle) {
+        p.mode = ProductMode::EnvMis;
+        std::snprintf(why, sizeof why,
+                      "env effective solid angle %.4g sr > %g x the lobe's %.4g sr: BSDF sampling "
+                      "follows the env across the lobe, so the vertex uses mis's env NEE (no "
+                      "per-hit product)",
+                      envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle);
+        p.reason = why;
+        return p;
+    }
     const bool whole = p.capHalfAngle >= kWholeSphereCapAngle;
     p.binLevel = whole ? 0 : (p.capHalfAngle < 0.3 ? 6 : 5);
     p.productLevel = 5;
@@ -121,9 +153,11 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     p.refineMaxLevels = kRefineMaxLevels;
     std::snprintf(why, sizeof why,
                   "mirror lobe: cap %.3f rad around the reflection vector (%s), %dx%d bins, 32^2 "
-                  "product, K env %zu / brdf %zu, lobe-refined to %.3f rad, then by the env pyramid",
+                  "product, K env %zu / brdf %zu, lobe-refined to %.3f rad, then by the env "
+                  "pyramid; env effective solid angle %.4g sr <= %g x the lobe's %.4g sr",
                   p.capHalfAngle, whole ? "whole sphere" : "window", 1 << p.binLevel,
-                  1 << p.binLevel, p.envKeep, p.brdfKeep, p.refineCellAngle);
+                  1 << p.binLevel, p.envKeep, p.brdfKeep, p.refineCellAngle, envSolidAngle,
+                  kEnvMisSolidAngleRatio, lobeSolidAngle);
     p.reason = why;
     return p;
 }
@@ -191,6 +225,8 @@ int MaterialProductTables::binOf(const glm::dvec3& axisLocal) const {
 std::string MaterialProductTables::describe() const {
     if (m_policy.mode == ProductMode::BsdfLobe)
         return "bsdf lobe: " + m_policy.reason;
+    if (m_policy.mode == ProductMode::EnvMis)
+        return "env mis: " + m_policy.reason;
     char buf[160];
     std::snprintf(buf, sizeof buf, " [%d bins, %zu env tables, %.1f KiB, built in %.1f ms]",
                   binCount(), factorCount(), double(bytes()) / 1024.0, m_buildSeconds * 1e3);

@@ -33,7 +33,10 @@ namespace wavelit::render {
 // Product: the lobe is sampled by the wavelet product over a window. BsdfLobe: the lobe is
 // narrower than the env resolves, so the BSDF sampler samples it (env sampling still takes the
 // tail's share, see DirectionSampler).
-enum class ProductMode { Product, BsdfLobe };
+// EnvMis: the env is spread far wider than the lobe (kEnvMisSolidAngleRatio): the material's
+// vertices use `mis`'s technique (env NEE by the exact env technique, MIS against the BSDF
+// continuation; vertexSamplerKind) and no product tables are built.
+enum class ProductMode { Product, BsdfLobe, EnvMis };
 
 struct ProductPolicy {
     ProductMode mode = ProductMode::Product;

@@ -41,6 +41,31 @@ TEST(EnvProductTables, PolicyFollowsLobeWidth) {
               ProductMode::BsdfLobe);
 }
 
+// The extents rule (kEnvMisSolidAngleRatio): the product only where env and lobe are of
+// comparable extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is left to
+// BSDF sampling (EnvMis), the cosine lobe (1.5 pi sr) keeps its product. A sun holding the
+// light: the cosine lobe is left to env sampling, a mirror lobe keeps its product.
+TEST(EnvProductTables, ProductOnlyWhereEnvAndLobeHaveComparableExtent) {
+    const plugins::Brdf* ggx = plugins::findBrdf("ggx");
+    const plugins::Brdf* lambert = plugins::findBrdf("lambert");
+    scene::Environment flat;
+    flat.image = std::make_shared<util::ImageRGB>(512, 256, glm::vec3(1.0f)); // texels << the lobe
+    const SamplerEnvironment constant = SamplerEnvironment::build(flat);
+    EXPECT_NEAR(constant.effectiveSolidAngle(), 4.0 * 3.141592653589793, 1e-9);
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, constant).mode, ProductMode::EnvMis);
+    EXPECT_EQ(chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, constant).mode,
+              ProductMode::Product);
+    const SamplerEnvironment sun = sunEnvironment();
+    EXPECT_LT(sun.effectiveSolidAngle(), 0.05);
+    EXPECT_EQ(chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, sun).mode, ProductMode::EnvMis);
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, sun).mode, ProductMode::Product);
+    // No tables for an EnvMis material: its vertices draw from none.
+    const MaterialProductTables t =
+        MaterialProductTables::build(sun, chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, sun));
+    EXPECT_EQ(t.factorCount(), 0u);
+    EXPECT_EQ(t.bytes(), 0u);
+}
+
 TEST(SamplerWindow, ContainsItsCapAndAlignsWithTheQuadtree) {
     const wavelet::OctahedralMap map;
     util::Pcg32 rng(3);

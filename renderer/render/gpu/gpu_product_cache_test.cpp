@@ -1,0 +1,161 @@
+// The per-pixel cache of the camera vertex's `wavelet` product (issue 12, docs/performance.md
+// "Wavelet pass cost, round 4"; shaders/sampling/product_cache.glsl, product_cache.h). Built in
+// the first pass after a reset from the pixel centre's hit and drawn from by later passes, it
+// must (1) keep the estimator unbiased — the cached-product render's mean equals `bsdf`'s per
+// block, on the Vulkan tracer and on its CPU twin, which rebuilds the same centre-hit mixture per
+// path — and (2) be rebuilt after any scene or camera change: the image after setScene equals bit
+// for bit a fresh tracer's on the edited scene.
+#include "render/gpu/gpu_path_tracer_impl.h"
+#include "render/sampling/product/env_product_tables.h"
+#include "render/session/integrator_factory.h"
+#include "render/testing/block_statistics.h"
+#include "render/testing/cpu_analytic_scenes.h"
+#include "render/testing/sampler_test_envs.h"
+#include "scene/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace wavelit::render {
+namespace {
+
+constexpr int kSize = 24;
+constexpr int kBlock = 8;
+constexpr int kBlocks = (kSize / kBlock) * (kSize / kBlock);
+
+// A glossy GGX sphere (r = 0.3: policy Product, a per-hit 16^2 product on the GPU) under a sky
+// whose 6-degree sun holds most of the light, bright enough that `bsdf` finds it through the lobe
+// often (a converging reference) and compact enough that the product pays (not EnvMis).
+std::shared_ptr<scene::Scene> glossyUnderSun(float cameraX) {
+    scene::Material m;
+    m.id = 1;
+    m.name = "glossy";
+    m.brdf = "ggx";
+    m.roughness = 0.3f;
+    m.baseColor = glm::vec3(0.9f, 0.7f, 0.4f);
+    auto s = makeFurnaceScene(m, glm::vec3(1.0f), 48, 24);
+    s->lighting.environment =
+        makeSunSkyEnvironment(128, glm::normalize(glm::vec3(0.2f, 0.5f, 0.8f)), 300.0, 6.0);
+    s->camera.position = glm::vec3(cameraX, 0.0f, 4.0f);
+    return s;
+}
+
+std::unique_ptr<Integrator> makeTracer(const std::shared_ptr<scene::Scene>& scene,
+                                       SamplerKind kind, DeviceChoice device, int bounces = 2) {
+    RenderOptions o;
+    o.width = kSize;
+    o.height = kSize;
+    o.bounces = bounces;
+    o.seed = 7;
+    o.sampler = kind;
+    o.device = device;
+    o.validation = true;
+    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
+    auto integrator = device == DeviceChoice::Vulkan ? createGpuPathTracer(scene, bvh, o)
+                                                     : createCpuPathTracer(scene, bvh, o);
+    EXPECT_TRUE(integrator.ok()) << integrator.error().message();
+    return integrator ? std::move(integrator.value()) : nullptr;
+}
+
+// Per-pass block means (each pass's image from the running means before and after it).
+BlockStatistics blockStatistics(Integrator& tracer, int passes) {
+    BlockStatistics stats(kBlocks);
+    std::vector<glm::dvec3> previous(size_t(kSize * kSize), glm::dvec3(0.0));
+    for (int pass = 1; pass <= passes; ++pass) {
+        EXPECT_TRUE(tracer.renderPass().ok());
+        auto img = tracer.image();
+        EXPECT_TRUE(img.ok());
+        std::vector<double> blocks(kBlocks, 0.0);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const size_t i = size_t(y * kSize + x);
+                const glm::dvec3 mean(img->pixels[i]);
+                const glm::dvec3 sample = mean * double(pass) - previous[i] * double(pass - 1);
+                previous[i] = mean;
+                blocks[size_t((y / kBlock) * (kSize / kBlock) + x / kBlock)] +=
+                    (sample.r + sample.g + sample.b) / double(kBlock * kBlock);
+            }
+        stats.addPass(blocks);
+    }
+    return stats;
+}
+
+void expectSameMeans(const BlockStatistics& a, const BlockStatistics& b, const char* what) {
+    int within3 = 0;
+    for (size_t i = 0; i < a.blocks(); ++i) {
+        const double z = (a.mean(i) - b.mean(i)) / combinedSigma(a, b, i);
+        EXPECT_LT(std::abs(z), 4.0) << what << ": block " << i << " " << a.mean(i) << " vs "
+                                    << b.mean(i);
+        within3 += std::abs(z) < 3.0 ? 1 : 0;
+    }
+    std::printf("%s: %d of %zu blocks within 3 sigma\n", what, within3, a.blocks());
+}
+
+TEST(GpuProductCache, TheSceneDrawsFromAPerHitProduct) {
+    const auto scene = glossyUnderSun(0.0f);
+    auto cpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Cpu);
+    ASSERT_TRUE(cpu);
+    ASSERT_TRUE(cpu->samplerTables());
+    const MaterialProductTables* t = cpu->samplerTables()->productTables(0);
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ(t->policy().mode, ProductMode::Product) << t->describe();
+}
+
+TEST(GpuProductCache, CachedProductRenderMeanEqualsBsdfPerBlock) {
+    const auto scene = glossyUnderSun(0.0f);
+    auto bsdf = makeTracer(scene, SamplerKind::Bsdf, DeviceChoice::Cpu);
+    auto gpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Vulkan);
+    auto cpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Cpu);
+    ASSERT_TRUE(bsdf && gpu && cpu);
+    const BlockStatistics reference = blockStatistics(*bsdf, 512);
+    const BlockStatistics gpuStats = blockStatistics(*gpu, 96);
+    const BlockStatistics cpuStats = blockStatistics(*cpu, 96);
+    expectSameMeans(gpuStats, reference, "vulkan wavelet (cached) vs bsdf");
+    expectSameMeans(cpuStats, reference, "cpu wavelet (centre-hit twin) vs bsdf");
+    EXPECT_EQ(gpu->validationMessageCount(), 0);
+    auto* tracer = dynamic_cast<gpu_tracer::GpuPathTracer*>(gpu.get());
+    ASSERT_NE(tracer, nullptr);
+    EXPECT_EQ(tracer->productCacheBuilds(), 1u) << "built once, read by the other 95 passes";
+}
+
+TEST(GpuProductCache, RebuiltAfterASceneOrCameraChange) {
+    const auto before = glossyUnderSun(0.0f);
+    auto edited = glossyUnderSun(0.4f); // the camera moved: every pixel's centre hit moves
+    edited->materials[0].roughness = 0.35f;
+    auto gpu = makeTracer(before, SamplerKind::Wavelet, DeviceChoice::Vulkan);
+    ASSERT_TRUE(gpu);
+    for (int i = 0; i < 3; ++i)
+        ASSERT_TRUE(gpu->renderPass().ok());
+    ASSERT_TRUE(gpu->setScene(edited, std::make_shared<const scene::Bvh>(scene::buildBvh(*edited)))
+                    .ok());
+    for (int i = 0; i < 3; ++i)
+        ASSERT_TRUE(gpu->renderPass().ok());
+    auto fresh = makeTracer(edited, SamplerKind::Wavelet, DeviceChoice::Vulkan);
+    ASSERT_TRUE(fresh);
+    for (int i = 0; i < 3; ++i)
+        ASSERT_TRUE(fresh->renderPass().ok());
+    auto a = gpu->image();
+    auto b = fresh->image();
+    ASSERT_TRUE(a.ok() && b.ok());
+    size_t differ = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < a->pixels.size(); ++i) {
+        differ += a->pixels[i] != b->pixels[i] ? 1u : 0u;
+        sum += a->pixels[i].g;
+    }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_EQ(differ, 0u) << "a stale cache (the old camera's centre hits) changes the draws";
+    auto* tracer = dynamic_cast<gpu_tracer::GpuPathTracer*>(gpu.get());
+    ASSERT_NE(tracer, nullptr);
+    EXPECT_EQ(tracer->productCacheBuilds(), 2u);
+    EXPECT_GT(tracer->productCacheBytes(), 0u);
+    EXPECT_EQ(gpu->validationMessageCount(), 0);
+}
+
+} // namespace
+} // namespace wavelit::render

@@ -1,0 +1,71 @@
+#include "render/gpu/product_cache.h"
+
+#include "render/reference/cpu_camera.h"
+
+#include <algorithm>
+#include <limits>
+#include <thread>
+
+namespace wavelit::render {
+
+uint32_t gpuProductCachePyramidWords() {
+    return ((1u << (2 * (kGpuMaxProductLevel + 1))) - 1u) / 3u;
+}
+
+GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const scene::Bvh& bvh,
+                                            int width, int height,
+                                            const std::vector<GpuSamplerMaterial>& samplerMaterials,
+                                            uint64_t maxBytes) {
+    GpuProductCacheLayout layout;
+    const size_t pixels = size_t(width) * size_t(height);
+    const CpuCamera camera(scene.camera, width, height);
+    const uint32_t pyramidWords = gpuProductCachePyramidWords();
+    // Each pixel's entry size (0: none) from its centre ray, rows shared among threads (every
+    // scene or camera edit lays the cache out again: one ray per pixel on the render thread cost
+    // ~0.7 CPU-s at 512^2), then the offsets in row order, so the layout is deterministic.
+    std::vector<uint32_t> sizes(pixels, 0u);
+    auto trace = [&](int firstRow, int rowStep) {
+        for (int y = firstRow; y < height; y += rowStep)
+            for (int x = 0; x < width; ++x) {
+                scene::BvhHit hit;
+                // The pixel centre, as the kernel's build pass traces it (jitter 0.5, 0.5).
+                if (!scene::intersect(bvh, camera.origin(), camera.direction(x, y, 0.5f, 0.5f),
+                                      0.0f, std::numeric_limits<float>::max(), hit))
+                    continue;
+                // The kernel's material index: min(uint(max(v0.w, 0)), materialCount - 1).
+                const float w = bvh.triangles[hit.triangle].v0[3];
+                const size_t m = std::min(size_t(std::max(w, 0.0f)), samplerMaterials.size() - 1);
+                const GpuSamplerMaterial& sm = samplerMaterials[m];
+                if (sm.mode != kGpuSamplerProduct && sm.mode != kGpuSamplerBsdfLobe)
+                    continue;
+                const bool pyramid = sm.mode == kGpuSamplerProduct && sm.precomputedBins == 0;
+                sizes[size_t(y) * size_t(width) + size_t(x)] =
+                    GpuProductCacheLayout::kHeaderWords + (pyramid ? pyramidWords : 0u);
+            }
+    };
+    const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    std::vector<std::thread> workers;
+    for (int t = 1; t < threads; ++t)
+        workers.emplace_back(trace, t, threads);
+    trace(0, threads);
+    for (std::thread& w : workers)
+        w.join();
+    layout.words.assign(pixels, GpuProductCacheLayout::kNoEntry);
+    uint64_t next = pixels;
+    for (size_t i = 0; i < pixels; ++i) {
+        if (sizes[i] == 0u)
+            continue;
+        if ((next + sizes[i]) * 4u > maxBytes) {
+            ++layout.skipped;
+            continue;
+        }
+        layout.words[i] = uint32_t(next);
+        next += sizes[i];
+        ++layout.entries;
+        layout.pyramidEntries += sizes[i] > GpuProductCacheLayout::kHeaderWords ? 1u : 0u;
+    }
+    layout.words.resize(size_t(next), 0u);
+    return layout;
+}
+
+} // namespace wavelit::render

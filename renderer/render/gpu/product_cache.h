@@ -1,0 +1,44 @@
+// The per-pixel cache of the camera vertex's `wavelet` NEE mixture (issue 12, docs/performance.md
+// "Wavelet pass cost, round 4"; shaders/sampling/product_cache.glsl reads and fills it). The
+// driver lays the buffer out on the CPU: which pixels get an entry (their centre ray's hit, traced
+// on the CPU BVH, has a material whose `wavelet` policy forms a product: mode Product or
+// BsdfLobe) and where each entry starts; the first pass after a reset fills the entries on the
+// device, later passes read them. Only those pixels take memory: a header of kHeaderWords words,
+// and for a per-hit product (a material without precomputed axis bins) its pyramid's
+// (4^(m+1) - 1) / 3 floats, m = kGpuMaxProductLevel (341 floats, 1460 bytes an entry in all).
+#pragma once
+
+#include "render/gpu/gpu_sampler_data.h"
+#include "scene/bvh.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wavelit::render {
+
+struct GpuProductCacheLayout {
+    static constexpr uint32_t kNoEntry = 0xFFFFFFFFu;
+    static constexpr uint32_t kHeaderWords = 24;
+    // [0, pixels): each pixel's entry offset in words (kNoEntry: none), then the entries'
+    // space (zeros: the device writes them).
+    std::vector<uint32_t> words;
+    uint64_t entries = 0;       // pixels with an entry
+    uint64_t pyramidEntries = 0; // of which hold a pyramid
+    uint64_t skipped = 0;       // pixels left without one: the buffer would exceed maxBytes
+    uint64_t bytes() const { return uint64_t(words.size()) * 4u; }
+};
+
+// The words a per-hit product's pyramid takes in an entry.
+uint32_t gpuProductCachePyramidWords();
+
+// Lays out the cache for the scene's camera at width x height. samplerMaterials: the packed
+// sampler materials (GpuSamplerData::materials, one per GPU material index). maxBytes bounds the
+// buffer (the device's storage-buffer range): pixels past it, in row order, get no entry and use
+// `mis`'s technique at their camera vertex (still unbiased, only noisier).
+GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const scene::Bvh& bvh,
+                                            int width, int height,
+                                            const std::vector<GpuSamplerMaterial>& samplerMaterials,
+                                            uint64_t maxBytes);
+
+} // namespace wavelit::render
