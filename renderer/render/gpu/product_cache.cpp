@@ -1,10 +1,12 @@
 #include "render/gpu/product_cache.h"
 
 #include "render/reference/cpu_camera.h"
+#include "util/path_sampler.h"
 
 #include <algorithm>
 #include <limits>
 #include <thread>
+#include <utility>
 
 namespace wavelit::render {
 
@@ -50,15 +52,35 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
     trace(0, threads);
     for (std::thread& w : workers)
         w.join();
+    // When the entries do not all fit, those of the pixels first in a hashed order get one until
+    // the buffer is full (the rest use `mis`'s technique): the same share in every part of the
+    // image, so the extra noise spreads evenly instead of starting below a line.
+    std::vector<uint32_t> order;
+    uint64_t wanted = pixels;
+    for (size_t i = 0; i < pixels; ++i)
+        if (sizes[i] != 0u) {
+            order.push_back(uint32_t(i));
+            wanted += sizes[i];
+        }
+    if (wanted * 4u > maxBytes) {
+        std::sort(order.begin(), order.end(), [](uint32_t a, uint32_t b) {
+            return std::pair(util::hashU32(a), a) < std::pair(util::hashU32(b), b);
+        });
+        uint64_t used = pixels;
+        for (uint32_t i : order) {
+            if ((used + sizes[i]) * 4u > maxBytes) {
+                sizes[i] = 0u;
+                ++layout.skipped;
+            } else {
+                used += sizes[i];
+            }
+        }
+    }
     layout.words.assign(pixels, GpuProductCacheLayout::kNoEntry);
     uint64_t next = pixels;
     for (size_t i = 0; i < pixels; ++i) {
         if (sizes[i] == 0u)
             continue;
-        if ((next + sizes[i]) * 4u > maxBytes) {
-            ++layout.skipped;
-            continue;
-        }
         layout.words[i] = uint32_t(next);
         next += sizes[i];
         ++layout.entries;

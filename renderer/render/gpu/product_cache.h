@@ -34,8 +34,9 @@ uint32_t gpuProductCachePyramidWords();
 
 // Lays out the cache for the scene's camera at width x height. samplerMaterials: the packed
 // sampler materials (GpuSamplerData::materials, one per GPU material index). maxBytes bounds the
-// buffer (the device's storage-buffer range): pixels past it, in row order, get no entry and use
-// `mis`'s technique at their camera vertex (still unbiased, only noisier).
+// buffer (the device's storage-buffer range): when not every entry fits, a hashed subset of the
+// pixels, spread over the whole image, gets one; the others use `mis`'s technique at their camera
+// vertex (still unbiased, only noisier).
 GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height,
                                             const std::vector<GpuSamplerMaterial>& samplerMaterials,
