@@ -5,7 +5,7 @@
 // product code (it must still compile and run under validation).
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/testing/sampler_test_envs.h"
-#include "render/session/integrator_factory.h"
+#include "render/testing/test_integrator.h"
 #include "scene/bvh.h"
 
 #include <gtest/gtest.h>
@@ -37,9 +37,7 @@ util::ImageRGB render(const std::shared_ptr<scene::Scene>& scene, SamplerKind ki
     o.sampler = kind;
     o.device = device;
     o.validation = true;
-    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    auto integrator = device == DeviceChoice::Vulkan ? createGpuPathTracer(scene, bvh, o)
-                                                     : createCpuPathTracer(scene, bvh, o);
+    auto integrator = makeTestIntegrator(scene, o);
     if (!integrator) {
         ADD_FAILURE() << integrator.error().message();
         return {};
@@ -90,7 +88,7 @@ TEST(WaveletEnvMisPolicy, AnEditThatNeedsTheProductCodeAsksForANewTracer) {
     o.sampler = SamplerKind::Wavelet;
     o.device = DeviceChoice::Vulkan;
     o.validation = true;
-    auto gpu = createGpuPathTracer(scene, std::make_shared<const scene::Bvh>(scene::buildBvh(*scene)), o);
+    auto gpu = makeTestIntegrator(scene, o);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
     // The same sky with a sun no brighter than its mean: the env spreads over steradians, the
     // cosine lobe's product pays again (same plugin: only the product code is missing).

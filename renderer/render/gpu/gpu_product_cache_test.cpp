@@ -7,10 +7,10 @@
 // for bit a fresh tracer's on the edited scene.
 #include "render/gpu/gpu_path_tracer_impl.h"
 #include "render/sampling/product/env_product_tables.h"
-#include "render/session/integrator_factory.h"
 #include "render/testing/block_statistics.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/testing/sampler_test_envs.h"
+#include "render/testing/test_integrator.h"
 #include "scene/bvh.h"
 
 #include <gtest/gtest.h>
@@ -55,9 +55,7 @@ std::unique_ptr<Integrator> makeTracer(const std::shared_ptr<scene::Scene>& scen
     o.sampler = kind;
     o.device = device;
     o.validation = true;
-    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    auto integrator = device == DeviceChoice::Vulkan ? createGpuPathTracer(scene, bvh, o)
-                                                     : createCpuPathTracer(scene, bvh, o);
+    auto integrator = makeTestIntegrator(scene, o);
     EXPECT_TRUE(integrator.ok()) << integrator.error().message();
     return integrator ? std::move(integrator.value()) : nullptr;
 }

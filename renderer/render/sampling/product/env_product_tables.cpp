@@ -88,7 +88,8 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         // has a narrower lobe somewhere off the normal, which this extent does not describe.
         const double lobeSolidAngle = 1.5 * kPi;
         const double envSolidAngle = env.effectiveSolidAngle();
-        const bool hemisphereWide = brdf.lobeWidth(params).halfWidth >= 0.5 * kPi - 1e-9;
+        const double halfWidth = brdf.lobeWidth(params).halfWidth;
+        const bool hemisphereWide = halfWidth >= 0.5 * kPi - 1e-9;
         if (hemisphereWide && envSolidAngle * kEnvMisSolidAngleRatio < lobeSolidAngle) {
             p.mode = ProductMode::EnvMis;
             std::snprintf(why, sizeof why,
@@ -99,7 +100,7 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
             p.reason = why;
             return p;
         }
-        p.lobeHalfWidth = brdf.lobeWidth(params).halfWidth;
+        p.lobeHalfWidth = halfWidth;
         p.capHalfAngle = kPi;
         p.binLevel = 0;
         p.productLevel = 5;
