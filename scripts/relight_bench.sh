@@ -15,7 +15,9 @@
 #     256) sets the preview and output size. FIRST=1 also takes the coarse-to-fine first answer
 #     (--coarse-level 3 --coarse-stride 2) in both binaries and prints a second table: the after
 #     binary's corrected first answer (firstCpuMs, firstMs, its relRMSE against the exact preview)
-#     next to the before binary's coarse answer (coarseMs) and full update.
+#     next to the before binary's coarse answer (coarseMs) and full update. SCENES="a b" runs a
+#     subset; LISTS=DIR takes DIR/SCENE.edits.json instead of the lists below; AFTER_ARGS adds
+#     flags to the after binary's runs (a report's fieldVsExactRelRMSE is then listed per step).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" == --ab ]]; then
@@ -23,6 +25,8 @@ if [[ "${1:-}" == --ab ]]; then
     first=()
     [[ ${FIRST:-0} == 1 ]] && first=(--coarse-level 3 --coarse-stride 2)
     out=out/relight-ab
+    scenes=(${SCENES:-ring_on_ground cornell_box glossy_sphere})
+    afterArgs=(${AFTER_ARGS:-})
     mkdir -p "$out"
     cat > "$out/ring_on_ground.edits.json" <<'JSON'
 [{"entity": "environment", "property": "rotation", "value": 90},
@@ -52,40 +56,46 @@ JSON
  {"entity": "material:chrome", "property": "roughness", "value": 0.25},
  {"entity": "material:chrome", "property": "roughness", "value": 0.2}]
 JSON
-    for s in ring_on_ground cornell_box glossy_sphere; do
+    [[ -n ${LISTS:-} ]] && for s in "${scenes[@]}"; do cp "$LISTS/$s.edits.json" "$out/"; done
+    for s in "${scenes[@]}"; do
         level=auto
         [[ $s == glossy_sphere ]] && level=6
         for r in $(seq "$runs"); do
             for v in before after; do
-                cli=$before
-                [[ $v == after ]] && cli=$after
+                cli=$before extra=()
+                [[ $v == after ]] && cli=$after extra=("${afterArgs[@]}")
                 echo "relight bench --ab: $s $v run $r"
                 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-$v" \
                     --report "$out/$s-$v-$r.json" --preview "$preview" --width "$preview" --height "$preview" \
-                    --threads 2 --level "$level" --skip-full-rebuild "${first[@]}" >/dev/null
+                    --threads 2 --level "$level" --skip-full-rebuild "${first[@]}" "${extra[@]}" >/dev/null
             done
         done
     done
-    python3 - "$out" "$runs" <<'PY'
+    python3 - "$out" "$runs" "${scenes[@]}" <<'PY'
 import json, statistics, sys
-out, runs = sys.argv[1], int(sys.argv[2])
+out, runs, scenes = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
 print("| scene | edit | points touched | before CPU ms (n) | after CPU ms (n) | after / before | before -> after wall ms |")
 print("|---|---|---|---|---|---|---|")
-for s in ("ring_on_ground", "cornell_box", "glossy_sphere"):
+vsExact = []
+for s in scenes:
     rows = {}
     for v in ("before", "after"):
         for r in range(1, runs + 1):
             for e in json.load(open(f"{out}/{s}-{v}-{r}.json"))["edits"]:
                 key = f"{e['entity']} {e['property']}"
-                rows.setdefault(key, {"before": [], "after": [], "points": e["pointsTouched"]})[v].append(
+                rows.setdefault(key, {"before": [], "after": [], "points": e["pointsTouched"], "vsExact": []})[v].append(
                     (e["incrementalCpuMs"], e["incrementalMs"]))
+                if v == "after" and r == 1 and "fieldVsExactRelRMSE" in e:
+                    rows[key]["vsExact"].append(round(e["fieldVsExactRelRMSE"], 4))
     for key, d in rows.items():
         cpu = {v: statistics.median(c for c, _ in d[v]) for v in ("before", "after")}
         wall = {v: statistics.median(w for _, w in d[v]) for v in ("before", "after")}
         print(f"| {s} | {key} | {d['points']} | {cpu['before']:.1f} ({len(d['before'])}) | {cpu['after']:.1f} "
               f"({len(d['after'])}) | {cpu['after'] / max(cpu['before'], 1e-3):.2f} | {wall['before']:.0f} -> {wall['after']:.0f} |")
+        if d["vsExact"]: vsExact.append(f"{s} {key}: relRMSE against the exact preview per step (run 1) {d['vsExact']}")
+for line in vsExact: print(line)
 first = {}
-for s in ("ring_on_ground", "cornell_box", "glossy_sphere"):
+for s in scenes:
     for r in range(1, runs + 1):
         for e in json.load(open(f"{out}/{s}-after-{r}.json"))["edits"]:
             if "firstCpuMs" in e:

@@ -7,45 +7,19 @@
 #   bash scripts/relight_field_ab.sh BEFORE_CLI AFTER_CLI [RUNS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-before=$1 after=$2 runs=${3:-2} preview=${PREVIEW:-256}
 out=out/relight-field-ab
 mkdir -p "$out"
-cat > "$out/ring.json" <<'JSON'
+cat > "$out/ring_on_ground.edits.json" <<'JSON'
 [{"entity": "object:ring", "property": "translation", "value": [0.3, 0.12, 0.0]},
  {"entity": "object:ring", "property": "translation", "value": [0.35, 0.12, 0.05]},
  {"entity": "object:ring", "property": "translation", "value": [0.4, 0.12, 0.05]},
  {"entity": "object:ring", "property": "translation", "value": [0.45, 0.12, 0.1]}]
 JSON
-cat > "$out/cornell.json" <<'JSON'
+cat > "$out/cornell_box.edits.json" <<'JSON'
 [{"entity": "object:small_box", "property": "translation", "value": [0.3, 0.3, 0.25]},
  {"entity": "object:small_box", "property": "translation", "value": [0.25, 0.3, 0.2]},
  {"entity": "object:small_box", "property": "translation", "value": [0.2, 0.3, 0.15]},
  {"entity": "object:small_box", "property": "translation", "value": [0.15, 0.3, 0.1]}]
 JSON
-for r in $(seq "$runs"); do
-    for s in ring cornell; do
-        scene=ring_on_ground
-        [[ $s == cornell ]] && scene=cornell_box
-        for v in before after; do
-            cli=$before extra=()
-            [[ $v == after ]] && cli=$after extra=(--shadow-field --field-check)
-            echo "relight field A/B: $s $v run $r"
-            "$cli" relight "resources/scenes/$scene.wlscene" --edits "$out/$s.json" --out "$out/$s-$v" \
-                --report "$out/$s-$v-$r.json" --preview "$preview" --width "$preview" --height "$preview" \
-                --threads 2 --skip-full-rebuild "${extra[@]}" >/dev/null
-        done
-    done
-done
-python3 - "$out" "$runs" <<'PY'
-import json, statistics, sys
-out, runs = sys.argv[1], int(sys.argv[2])
-for s in ("ring", "cornell"):
-    for v in ("before", "after"):
-        cpu, wall, rel = [], [], []
-        for r in range(1, runs + 1):
-            for e in json.load(open(f"{out}/{s}-{v}-{r}.json"))["edits"]:
-                cpu.append(e["incrementalCpuMs"]); wall.append(e["incrementalMs"])
-                if "fieldVsExactRelRMSE" in e and r == 1: rel.append(round(e["fieldVsExactRelRMSE"], 4))
-        print(f"{s} {v}: CPU ms median {statistics.median(cpu):.0f} ({min(cpu):.0f}-{max(cpu):.0f}), "
-              f"wall ms median {statistics.median(wall):.0f}, n {len(cpu)}" + (f", field vs exact {rel}" if rel else ""))
-PY
+SCENES="ring_on_ground cornell_box" LISTS=$out AFTER_ARGS="--shadow-field --field-check" \
+    exec bash scripts/relight_bench.sh --ab "$1" "$2" "${3:-2}"

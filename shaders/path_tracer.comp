@@ -271,9 +271,10 @@ void main() {
 #ifdef WAVELIT_DIRECTION_SAMPLERS
         SamplerGlobals globals;
         // mis's NEE: the env alone; wavelet's too past its product vertices (vertexSamplerKind).
-        bool envAloneHere = kind == kSamplerMis ||
-                            (kind == kSamplerWavelet && depth >= uint(WAVELIT_WAVELET_PRODUCT_VERTICES));
-        globals.kind = envAloneHere ? kSamplerEnv : kind;
+        bool envTechniqueHere =
+            kind == kSamplerMis ||
+            (kind == kSamplerWavelet && depth >= uint(WAVELIT_WAVELET_PRODUCT_VERTICES));
+        globals.kind = envTechniqueHere ? kSamplerEnv : kind;
         globals.lit = params.samplerInfo.y != 0u;
         globals.tailOffset = params.samplerInfo.z;
         globals.envLevel = int(params.samplerInfo.w);
@@ -324,9 +325,9 @@ void main() {
             if (vertexNee) {
                 // The env technique alone (mis, wavelet's env-only vertices, env): one texel
                 // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
-                bool envOnly = ds.cEnv == 1.0;
-                vec3 envDirect = beta * envNextEvent(ds, envOnly,
-                                                     envOnly && kind != kSamplerEnv, beta, brdfType,
+                bool techniqueOnly = ds.cEnv == 1.0;
+                bool roulette = techniqueOnly && kind != kSamplerEnv;
+                vec3 envDirect = beta * envNextEvent(ds, techniqueOnly, roulette, beta, brdfType,
                                                      mat.baseColorRoughness.rgb,
                                                      mat.baseColorRoughness.a, frame, wo, ng, next,
                                                      ue.x, ue.y, ue3, kind == kSamplerEnv,

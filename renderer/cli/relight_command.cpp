@@ -22,8 +22,8 @@
 // shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
 // the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend)): the report's "shadowField" block says what the field and the per-point
-// caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks
-// and cacheMs; --field-check also keeps an exact preview beside it and reports each edit's
+// caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks,
+// selfMasksReused and cacheMs; --field-check also keeps an exact preview beside it and reports each edit's
 // fieldVsExactRelRMSE (the field's image against the exact, ray-cast one).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
@@ -279,6 +279,7 @@ int runRelight(const std::vector<std::string>& argv) {
             e["method"] = summary.method.empty() ? "exact" : summary.method;
             e["pointsRebuilt"] = summary.pointsRebuilt;
             e["fieldFallbacks"] = summary.fieldFallbacks;
+            e["selfMasksReused"] = summary.selfMasksReused;
             e["cacheMs"] = summary.cacheMs;
             e["rebuiltCpuMs"] = summary.rebuiltCpuMs; // of incrementalCpuMs: the hit-changed points
         }

@@ -194,13 +194,17 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     ctxWithout.sceneBvh = &f.bvhWithout;
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     const bool nearest = !f.field.settings().interpolate;
-    std::atomic<int64_t> rebuiltNs{0}; // CPU time of the points whose camera hit changed
-    std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0);
+    const bool ownConvex = m_occluders[j].convexFront && m_occluders[j].convexBack;
+    std::atomic<int64_t> rebuiltNs{0}; // CPU time of the rebuilt points (hit changed, or own)
+    std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
+        reused(m_points.size(), 0);
     parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
         PointDragCache& cache = f.caches[i];
-        const bool hitChanged = !(cast[i] == p);
+        // A point of a non-convex moved object whose camera hit stayed put (a face parallel to
+        // the drag) still moved against the rest of its object: its self-visibility changed.
+        const bool hitChanged = !(cast[i] == p) || (p.hit && p.object == j && !ownConvex);
         if (hitChanged) {
             const int64_t start = threadCpuNs();
             struct Charge { // the hit-changed branch's CPU time, on every way out of it
@@ -221,8 +225,10 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
             if (p.object == j) { // the object's own surface: its factors, self-visibility cached
                 // Its offset from the object's centre now, as the cached points' from the centre then.
                 const glm::vec3 offset = rayOrigin(p) - sphere.centre;
-                s = buildPointState(ctx, p, UINT32_MAX, f.ownGrid.empty() ? nullptr : f.nearestSelf(offset, p.geometric));
+                const TexelBits* self = f.ownGrid.empty() ? nullptr : f.nearestSelf(offset, p.geometric);
+                s = buildPointState(ctx, p, UINT32_MAX, self);
                 rebuilt[i] = 1;
+                reused[i] = self ? 1 : 0;
                 return;
             }
             // A surface the object uncovered: its factors without the object, then the field.
@@ -278,6 +284,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     summary.pointsTouched = size_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
     summary.pointsRebuilt = size_t(std::count(rebuilt.begin(), rebuilt.end(), uint8_t(1)));
     summary.fieldFallbacks = size_t(std::count(fallback.begin(), fallback.end(), uint8_t(1)));
+    summary.selfMasksReused = size_t(std::count(reused.begin(), reused.end(), uint8_t(1)));
     summary.rebuiltCpuMs = double(rebuiltNs.load()) * 1e-6;
     summary.pointsMs = timer.milliseconds();
     m_touched = std::move(touched);

@@ -60,6 +60,9 @@ struct EditSummary {
     std::string method;
     size_t pointsRebuilt = 0;
     size_t fieldFallbacks = 0;
+    // Of the rebuilt points on a non-convex moved object: those whose self-visibility came from
+    // the drag start's own-surface cache (the nearest cached point's mask) instead of rays.
+    size_t selfMasksReused = 0;
     double cacheMs = 0.0;
     double rebuiltCpuMs = 0.0; // CPU time (all workers) of the points whose camera hit changed
 };

@@ -129,33 +129,46 @@ TEST(RelightPreview, ColourEditsOfLinearAndAffineBrdfsTouchNoPoint) {
     EXPECT_GT((*preview)->applyChanges(scene, changes).pointsTouched, 0u);
 }
 
+// Lambert with its f recoloured by `shape` (f = shape(params, lambert's f, lambert's f at a white
+// colour)): BRDFs the colour-use probe must classify, everything but eval forwarded to lambert.
+class ReColouredLambert final : public plugins::Brdf {
+public:
+    using Shape = glm::vec3 (*)(const plugins::BrdfParams&, const glm::vec3& f, const glm::vec3& fWhite);
+    ReColouredLambert(const char* name, Shape shape) : m_name(name), m_shape(shape) {}
+    const char* name() const override { return m_name; }
+    std::span<const plugins::BrdfParameterInfo> parameters() const override { return m_base.parameters(); }
+    plugins::BrdfLobeAxis lobeAxis() const override { return m_base.lobeAxis(); }
+    plugins::BrdfLobeWidth lobeWidth(const plugins::BrdfParams& p) const override { return m_base.lobeWidth(p); }
+    plugins::BrdfGpuTwin gpuTwin() const override { return {}; }
+    glm::vec3 eval(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+        return m_shape(p, m_base.eval(p, wo, wi), m_base.eval(plugins::BrdfParams(glm::vec3(1.0f), 1.0f), wo, wi));
+    }
+    plugins::BrdfSample sample(const plugins::BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
+        return m_base.sample(p, wo, u1, u2);
+    }
+    float pdf(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
+        return m_base.pdf(p, wo, wi);
+    }
+    std::optional<glm::vec2> invert(const plugins::BrdfParams& p, const glm::vec3& wo,
+                                    const glm::vec3& wi) const override {
+        return m_base.invert(p, wo, wi);
+    }
+
+private:
+    const plugins::Brdf& m_base = *plugins::findBrdf("lambert");
+    const char* m_name;
+    Shape m_shape;
+};
+
 // f(c) against direct evaluation: the class the probe finds for each plugin, and a plugin that is
 // not affine in its colour (f = c^2 / pi) is Fixed, so its colour edits rebuild T.
 TEST(RelightColourUse, ClassifiesThePluginsAndRefusesANonAffineOne) {
     plugins::BrdfParams params(glm::vec3(0.5f), 0.3f);
     EXPECT_EQ(colourUseOf(*plugins::findBrdf("lambert"), params), ColourUse::Linear);
     EXPECT_EQ(colourUseOf(*plugins::findBrdf("ggx"), params), ColourUse::Affine);
-    struct Squared final : plugins::Brdf {
-        const plugins::Brdf& base = *plugins::findBrdf("lambert");
-        const char* name() const override { return "squared"; }
-        std::span<const plugins::BrdfParameterInfo> parameters() const override { return base.parameters(); }
-        plugins::BrdfLobeAxis lobeAxis() const override { return base.lobeAxis(); }
-        plugins::BrdfLobeWidth lobeWidth(const plugins::BrdfParams& p) const override { return base.lobeWidth(p); }
-        plugins::BrdfGpuTwin gpuTwin() const override { return {}; }
-        glm::vec3 eval(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-            return p.baseColor * base.eval(p, wo, wi);
-        }
-        plugins::BrdfSample sample(const plugins::BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
-            return base.sample(p, wo, u1, u2);
-        }
-        float pdf(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-            return base.pdf(p, wo, wi);
-        }
-        std::optional<glm::vec2> invert(const plugins::BrdfParams& p, const glm::vec3& wo,
-                                        const glm::vec3& wi) const override {
-            return base.invert(p, wo, wi);
-        }
-    } squared;
+    const ReColouredLambert squared("squared", [](const plugins::BrdfParams& p, const glm::vec3& f, const glm::vec3&) {
+        return p.baseColor * f;
+    });
     EXPECT_EQ(colourUseOf(squared, params), ColourUse::Fixed);
     // Every registered plugin's class reproduces f at a colour it was not probed with.
     const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f)), wi = glm::normalize(glm::vec3(-0.25f, 0.3f, 0.7f));
@@ -197,27 +210,10 @@ TEST(RelightColourUse, GreyAffineOneEvaluationGivesWhiteAndBlack) {
                 EXPECT_NEAR(f.y, f0[k], 1e-6 * std::max(1.0f, f0[k]));
             }
         }
-    struct Tinted final : plugins::Brdf { // f = c / pi + (0.1, 0.2, 0.3) / pi: affine, not grey
-        const plugins::Brdf& base = *plugins::findBrdf("lambert");
-        const char* name() const override { return "tinted"; }
-        std::span<const plugins::BrdfParameterInfo> parameters() const override { return base.parameters(); }
-        plugins::BrdfLobeAxis lobeAxis() const override { return base.lobeAxis(); }
-        plugins::BrdfLobeWidth lobeWidth(const plugins::BrdfParams& p) const override { return base.lobeWidth(p); }
-        plugins::BrdfGpuTwin gpuTwin() const override { return {}; }
-        glm::vec3 eval(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-            return base.eval(p, wo, wi) + glm::vec3(0.1f, 0.2f, 0.3f) * base.eval(plugins::BrdfParams(glm::vec3(1.0f), 1.0f), wo, wi);
-        }
-        plugins::BrdfSample sample(const plugins::BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {
-            return base.sample(p, wo, u1, u2);
-        }
-        float pdf(const plugins::BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
-            return base.pdf(p, wo, wi);
-        }
-        std::optional<glm::vec2> invert(const plugins::BrdfParams& p, const glm::vec3& wo,
-                                        const glm::vec3& wi) const override {
-            return base.invert(p, wo, wi);
-        }
-    } tinted;
+    // f = c / pi + (0.1, 0.2, 0.3) / pi: affine, not grey
+    const ReColouredLambert tinted("tinted", [](const plugins::BrdfParams&, const glm::vec3& f, const glm::vec3& fWhite) {
+        return f + glm::vec3(0.1f, 0.2f, 0.3f) * fWhite;
+    });
     EXPECT_EQ(colourUseOf(tinted, params), ColourUse::Affine);
     EXPECT_FALSE(greyAffine(tinted, params));
 }

@@ -19,20 +19,21 @@ vec3 envTexelRadiance(uvec2 t) {
 }
 
 // Direct env light from the vertex's NEE technique `ds`, shadow ray, MIS against the BSDF
-// continuation (envAlone, the `env` sampler: weight 1). envOnly: ds is the env technique alone.
+// continuation (unweighted: the `env` sampler, weight 1). envTechniqueOnly: ds is the env
+// technique alone (DirectionSampler::envTechniqueOnly on the CPU).
 // roulette (`mis`): the shadow ray is traced with probability p = min(1, max(beta f) cos w / c),
 // c = WAVELIT_MIS_ENV_ROULETTE, and its term divided by p. With the env technique's pdf
 // proportional to luminance x solid angle, Le / pdf has the luminance of the env's integral, so
 // max(beta f) cos w is the unoccluded term over that integral (up to the texel's chroma): p
 // depends on no light's, tint's or env's intensity, and every path's estimate stays linear in
 // each of them (LightMix). u3 is the coin: an env-only technique draws no technique with it.
-vec3 envNextEvent(DirSampler ds, bool envOnly, bool roulette, vec3 beta, uint type,
+vec3 envNextEvent(DirSampler ds, bool envTechniqueOnly, bool roulette, vec3 beta, uint type,
                   vec3 baseColor, float roughness, Frame frame, vec3 wo, vec3 ng, vec3 o, float u1,
-                  float u2, float u3, bool envAlone, uint triangleCount) {
+                  float u2, float u3, bool unweighted, uint triangleCount) {
     vec3 wiWorld;
     float pdf;
     uvec2 texel = uvec2(0u);
-    if (envOnly) {
+    if (envTechniqueOnly) {
         // dsSample's exact-env branch with cEnv = 1, the pdf read once at the radiance's texel.
         vec3 local = envExactSample(ds.exactOffset, dvec2(u1, u2));
         wiWorld = normalize(envToWorld(ds.cosSinYaw, local));
@@ -47,7 +48,7 @@ vec3 envNextEvent(DirSampler ds, bool envOnly, bool roulette, vec3 beta, uint ty
     if (wi.z <= 0.0) return vec3(0.0);
     vec3 f = brdfEval(type, baseColor, roughness, wo, wi);
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
-    float w = envAlone ? 1.0 : powerHeuristic(pdf, brdfPdf(type, roughness, wo, wi));
+    float w = unweighted ? 1.0 : powerHeuristic(pdf, brdfPdf(type, roughness, wo, wi));
     float scale = wi.z * w / pdf;
     if (roulette) {
         vec3 bf = beta * f;
@@ -61,7 +62,7 @@ vec3 envNextEvent(DirSampler ds, bool envOnly, bool roulette, vec3 beta, uint ty
     float t, b1, b2;
     if (bvhTrace(o, wiWorld, 0.0, kFloatMax, true, triangleCount, tri, t, b1, b2))
         return vec3(0.0);
-    vec3 Le = envOnly ? envTexelRadiance(texel) : envRadiance(wiWorld);
+    vec3 Le = envTechniqueOnly ? envTexelRadiance(texel) : envRadiance(wiWorld);
     return f * Le * scale;
 }
 

@@ -223,7 +223,7 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
     // is the twin) wherever the NEE is `mis`'s technique: `mis`, and `wavelet` past its product
     // vertices and under the EnvMis policy. u3 its coin: the env technique alone draws no
     // technique with it.
-    if (m_options.sampler != SamplerKind::Env && nee.envAlone()) {
+    if (m_options.sampler != SamplerKind::Env && nee.envTechniqueOnly()) {
         const glm::vec3 bf = beta * f;
         const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / float(kMisEnvRoulette);
         if (p < 1.0f) {

@@ -110,7 +110,7 @@ public:
     std::string describe() const;
     // The env technique alone (`env`, `mis`'s NEE, `wavelet` past its product vertices or under
     // the EnvMis policy): the tracers play `mis`'s shadow-ray roulette on such NEE draws.
-    bool envAlone() const {
+    bool envTechniqueOnly() const {
         return m_components.size() == 1 && m_components[0].technique == Technique::Env;
     }
 
