@@ -14,6 +14,9 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
 // The driver passes its workgroup shape (gpu_path_tracer.cpp) so dispatch and shader agree.
+// On lavapipe the shape barely matters: a group runs as vectors of 8 x-consecutive invocations
+// whatever its size (8x8, 16x4, 32x2, 64x1, 8x4, 16x16 within noise; docs/performance.md
+// "Lavapipe throughput (issue 12)").
 #ifndef WAVELIT_WORKGROUP_X
 #define WAVELIT_WORKGROUP_X 8
 #define WAVELIT_WORKGROUP_Y 8
