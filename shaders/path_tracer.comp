@@ -14,6 +14,9 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
 // The driver passes its workgroup shape (gpu_path_tracer.cpp) so dispatch and shader agree.
+// On lavapipe the shape barely matters: a group runs as vectors of 8 x-consecutive invocations
+// whatever its size (8x8, 16x4, 32x2, 64x1, 8x4, 16x16 within noise; docs/performance.md
+// "Lavapipe throughput (issue 12)").
 #ifndef WAVELIT_WORKGROUP_X
 #define WAVELIT_WORKGROUP_X 8
 #define WAVELIT_WORKGROUP_Y 8
@@ -41,12 +44,8 @@ layout(push_constant) uniform Pass {
     uint buildCache; // 1: build the per-pixel product cache first (sampling/product_cache.glsl)
 } pass;
 
-struct BvhNode {
-    vec3 boundsMin;
-    uint leftFirst;
-    vec3 boundsMax;
-    uint count;
-};
+// The scene buffers are declared through their 64-bit views (common/packed64.glsl: half the
+// loads on lavapipe); these are the 32-bit records the kernel unpacks them into.
 struct BvhTriangle {
     vec4 v0; // w = material index
     vec4 v1; // w = object index
@@ -60,14 +59,16 @@ struct Material {
     vec4 emissionType;       // rgb = emission, a = BRDF type code (common/brdf.glsl)
 };
 
-layout(std430, binding = 1) readonly buffer Nodes { BvhNode bvhNodes[]; };
-layout(std430, binding = 2) readonly buffer Triangles { BvhTriangle bvhTriangles[]; };
-layout(std430, binding = 3) readonly buffer Materials { Material materials[]; };
+#include "common/packed64.glsl"
+layout(std430, binding = 1) readonly buffer Nodes { BvhNode64 bvhNodes64[]; };
+layout(std430, binding = 2) readonly buffer Triangles { BvhTriangle64 bvhTriangles64[]; };
+layout(std430, binding = 3) readonly buffer Materials { Material64 materials64[]; };
 layout(std430, binding = 4) readonly buffer Environment { float envTexels[]; };
-layout(std430, binding = 5) buffer Accumulation { vec4 accumulation[]; };
+layout(std430, binding = 5) buffer Accumulation { u64vec2 accumulation[]; }; // vec4 sums
 
 #include "common/lights.glsl"
-layout(std430, binding = 6) readonly buffer Lights { Light analyticLights[]; };
+layout(std430, binding = 6) readonly buffer Lights { Light64 analyticLights64[]; };
+#include "common/scene_loads.glsl"
 
 #ifdef WAVELIT_DIRECTION_SAMPLERS
 #include "sampling/sampler_structs.glsl"
@@ -107,7 +108,7 @@ vec3 emissionAlongRay(vec3 origin, vec3 dir, float tMax, bool escaped, float bsd
                       uint pixelIndex) {
     vec3 sum = vec3(0.0);
     for (uint k = 0u; k < lightCount; ++k) {
-        Light l = analyticLights[k];
+        Light l = loadLight(k);
         float t;
         if (!lightEvalHit(l, origin, dir, tMax, escaped, t)) continue;
         float w = 1.0;
@@ -128,7 +129,7 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
                , DirSampler ds, bool dsDrawsContinuation
 #endif
 ) {
-    Light l = analyticLights[min(uint(uSelect * float(lightCount)), lightCount - 1u)];
+    Light l = loadLight(min(uint(uSelect * float(lightCount)), lightCount - 1u));
     LightSample ls = lightSample(l, o, u1, u2);
     if (!ls.valid || !(ls.pdf > 0.0)) return vec3(0.0);
     if (dot(ls.wi, ng) <= 0.0) return vec3(0.0);
@@ -243,7 +244,7 @@ void main() {
 #endif
             break;
         }
-        BvhTriangle T = bvhTriangles[tri];
+        BvhTriangle T = loadTriangle(tri);
         vec3 position = origin + t * dir;
         vec3 ng = normalize(cross(T.v1.xyz - T.v0.xyz, T.v2.xyz - T.v0.xyz));
         if (dot(ng, dir) > 0.0) ng = -ng;
@@ -255,7 +256,7 @@ void main() {
         if (dot(-dir, ns) <= 0.0) ns = ng;
 
         uint m = min(uint(max(T.v0.w, 0.0)), materialCount - 1u);
-        Material mat = materials[m];
+        Material mat = loadMaterial(m);
         L += beta * mat.emissionType.rgb;
 #ifdef WAVELIT_LIGHT_GROUPS
         if (any(notEqual(mat.emissionType.rgb, vec3(0.0))))
@@ -381,5 +382,5 @@ void main() {
         origin = next;
         dir = wi;
     }
-    accumulation[pixelIndex] += vec4(L, 1.0);
+    accumulation[pixelIndex] = packWords4(words4(accumulation[pixelIndex]) + vec4(L, 1.0));
 }

@@ -1,6 +1,7 @@
 // Software BVH traversal (lavapipe has no ray queries): the layout of renderer/scene/bvh.h and the
 // same slab test and Moller-Trumbore arithmetic as bvh.cpp's CPU traversal, nearer child first
-// with a fixed stack. The including shader declares `bvhNodes` and `bvhTriangles`.
+// with a fixed stack. The including shader declares `bvhNodes64` and `bvhTriangles64`, the
+// 64-bit views of common/packed64.glsl.
 #ifndef WAVELIT_BVH_GLSL
 #define WAVELIT_BVH_GLSL
 
@@ -9,9 +10,14 @@
 // 64 entries cover a tree of depth 64; binned SAH trees over millions of triangles stay far below.
 #define BVH_STACK_SIZE 64
 
-float bvhHitBox(uint node, vec3 o, vec3 invDir, float tMin, float tMax) {
-    vec3 t0 = (bvhNodes[node].boundsMin - o) * invDir;
-    vec3 t1 = (bvhNodes[node].boundsMax - o) * invDir;
+// The box test of `node`, read as one u64vec4 (common/packed64.glsl); info = (leftFirst, count)
+// from the same load, so a node the traversal descends into is not read again.
+float bvhHitBox(uint node, vec3 o, vec3 invDir, float tMin, float tMax, out uvec2 info) {
+    u64vec4 q = bvhNodes64[node].q;
+    vec2 minZ = words2(q.y), maxZ = words2(q.w);
+    info = uvec2(highWord(q.y), highWord(q.w));
+    vec3 t0 = (vec3(words2(q.x), minZ.x) - o) * invDir;
+    vec3 t1 = (vec3(words2(q.z), maxZ.x) - o) * invDir;
     vec3 tn = min(t0, t1), tf = max(t0, t1);
     float enter = max(max(tn.x, tn.y), max(tn.z, tMin));
     float exit = min(min(tf.x, tf.y), min(tf.z, tMax));
@@ -20,8 +26,11 @@ float bvhHitBox(uint node, vec3 o, vec3 invDir, float tMin, float tMax) {
 
 bool bvhHitTriangle(uint i, vec3 o, vec3 d, float tMin, float tMax, out float t, out float b1,
                     out float b2) {
-    vec3 v0 = bvhTriangles[i].v0.xyz;
-    vec3 e1 = bvhTriangles[i].v1.xyz - v0, e2 = bvhTriangles[i].v2.xyz - v0;
+    // Three 64-bit pairs (6 loads a lane) instead of three vec3s (9).
+    u64vec2 w0 = bvhTriangles64[i].v0, w1 = bvhTriangles64[i].v1, w2 = bvhTriangles64[i].v2;
+    vec3 v0 = vec3(words2(w0.x), words2(w0.y).x);
+    vec3 e1 = vec3(words2(w1.x), words2(w1.y).x) - v0;
+    vec3 e2 = vec3(words2(w2.x), words2(w2.y).x) - v0;
     vec3 p = cross(d, e2);
     float det = dot(e1, p);
     t = 0.0;
@@ -55,12 +64,11 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
     uint stack[BVH_STACK_SIZE];
     float stackEnter[BVH_STACK_SIZE];
     int sp = 0;
-    uint node = 0u;
     bool found = false;
-    if (bvhHitBox(0u, o, invDir, tMin, tMax) == kInfinity) return false;
+    uvec2 info; // the current node's (leftFirst, count)
+    if (bvhHitBox(0u, o, invDir, tMin, tMax, info) == kInfinity) return false;
     for (;;) {
-        uint count = bvhNodes[node].count;
-        uint first = bvhNodes[node].leftFirst;
+        uint first = info.x, count = info.y;
         bool descended = false;
         if (count > 0u) {
             for (uint i = first; i < first + count; ++i) {
@@ -77,11 +85,13 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
             }
         } else {
             uint a = first, b = first + 1u;
-            float ta = bvhHitBox(a, o, invDir, tMin, tMax);
-            float tb = bvhHitBox(b, o, invDir, tMin, tMax);
+            uvec2 infoA, infoB;
+            float ta = bvhHitBox(a, o, invDir, tMin, tMax, infoA);
+            float tb = bvhHitBox(b, o, invDir, tMin, tMax, infoB);
             if (ta > tb) {
                 float tt = ta; ta = tb; tb = tt;
                 uint tn = a; a = b; b = tn;
+                infoA = infoB;
             }
             if (ta != kInfinity) {
                 if (tb != kInfinity && sp < BVH_STACK_SIZE) {
@@ -89,7 +99,7 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
                     stackEnter[sp] = tb;
                     ++sp;
                 }
-                node = a;
+                info = infoA;
                 descended = true;
             }
         }
@@ -97,6 +107,7 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
         // Pop, skipping nodes whose box now lies beyond the closest hit (the stored entry
         // distance against the shrunken tMax is the box test redone, as in bvh.cpp).
         bool popped = false;
+        uint node = 0u;
         while (sp > 0) {
             --sp;
             node = stack[sp];
@@ -106,6 +117,8 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
             }
         }
         if (!popped) return found;
+        uint64_t q1 = bvhNodes64[node].q.y, q3 = bvhNodes64[node].q.w;
+        info = uvec2(highWord(q1), highWord(q3));
     }
     return found;
 }

@@ -42,7 +42,7 @@ void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCoun
     uint tri;
     float t, b1, b2;
     if (!bvhTrace(origin, dir, 0.0, kFloatMax, false, triangleCount, tri, t, b1, b2)) return;
-    BvhTriangle T = bvhTriangles[tri];
+    BvhTriangle T = loadTriangle(tri);
     vec3 ng = normalize(cross(T.v1.xyz - T.v0.xyz, T.v2.xyz - T.v0.xyz));
     if (dot(ng, dir) > 0.0) ng = -ng;
     float b0 = 1.0 - b1 - b2;
@@ -54,7 +54,7 @@ void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCoun
     uint m = min(uint(max(T.v0.w, 0.0)), materialCount - 1u);
     SamplerMaterial sm = samplerMaterials[m];
     if (!pcCacheableMode(sm.mode)) return;
-    Material mat = materials[m];
+    Material mat = loadMaterial(m);
     Frame frame = frameFromNormal(ns);
     vec3 wo = frameToLocal(frame, -dir);
     DirSampler s = dsSetup(g, sm, frame, wo, uint(mat.emissionType.a), mat.baseColorRoughness.rgb,

@@ -1,0 +1,24 @@
+// The scene's records read through their 64-bit views (common/packed64.glsl: half the loads on
+// lavapipe), unpacked into the 32-bit structs the rest of the kernel uses. Included by
+// path_tracer.comp after its buffers; the compiler drops the words a caller does not use.
+#ifndef WAVELIT_SCENE_LOADS_GLSL
+#define WAVELIT_SCENE_LOADS_GLSL
+
+BvhTriangle loadTriangle(uint i) {
+    BvhTriangle64 w = bvhTriangles64[i];
+    return BvhTriangle(words4(w.v0), words4(w.v1), words4(w.v2), words4(w.n0), words4(w.n1),
+                       words4(w.n2));
+}
+
+Material loadMaterial(uint m) {
+    Material64 w = materials64[m];
+    return Material(words4(w.baseColorRoughness), words4(w.emissionType));
+}
+
+Light loadLight(uint k) {
+    Light64 w = analyticLights64[k];
+    return Light(words4(w.positionType), words4(w.normalRadius), words4(w.emissionArea),
+                 words4(w.axisUInner), words4(w.axisVOuter), words4(w.sun));
+}
+
+#endif
