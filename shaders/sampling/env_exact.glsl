@@ -1,11 +1,13 @@
 // The `env` technique with the radiance's own pdf (render/sampling/equirect_env_sampler.h is the
-// CPU twin): an equirect texel by an alias table over the rows and its row's alias table over the
-// columns (O(1): no search), then a point uniform in solid angle inside it; the pdf is the texel's
-// tabulated solid-angle pdf, read at the texel the radiance lookup reads (common/equirect.glsl).
-// The tables sit in samplerWords at `offset` (gpu_sampler_data.h): width, height, then each row's
-// texel solid angle (height doubles, two words each: low, high), the row alias table (height
-// slots) and the rows' column alias tables (height x width slots), two words a slot (threshold
-// float bits, alias), then the texels' pdfs (height x width doubles, row-major).
+// CPU twin): an equirect texel by an inverse CDF over the rows and its row's CDF over the columns
+// (render/sampling/guided_cdf.h: a guide table bounds each search to the entries one 1/n of the
+// mass spans; monotone in u, so stratified passes give stratified draws), then a point uniform in
+// solid angle inside it; the pdf is the texel's tabulated solid-angle pdf, read at the texel the
+// radiance lookup reads (common/equirect.glsl). The tables sit in samplerWords at `offset`
+// (gpu_sampler_data.h): width, height, each row's texel solid angle (height doubles, two words
+// each: low, high), the rows' CDF (height + 1 doubles) and guide (height words), the rows' column
+// CDFs (height x (width + 1) doubles) and guides (height x width words), then the texels' pdfs
+// (height x width doubles, row-major).
 #ifndef WAVELIT_ENV_EXACT_GLSL
 #define WAVELIT_ENV_EXACT_GLSL
 
@@ -16,25 +18,40 @@ double envExactWord(uint i) { return packDouble2x32(uvec2(samplerWords[i], sampl
 
 uvec2 envExactSize(uint offset) { return uvec2(samplerWords[offset], samplerWords[offset + 1u]); }
 
-// The entry of the n slots at word `base` that u draws: the slot by u n, its coin by the
-// remainder (keep the slot's entry below its threshold, else take its alias); u rescaled into
-// [0, 1) within what was chosen. The CPU's pick(), in the same double operations.
-uint envExactPick(uint base, uint n, inout double u) {
-    double s = u * double(n);
-    uint i = min(uint(s), n - 1u);
-    double f = s - double(i);
-    double q = double(uintBitsToFloat(samplerWords[base + 2u * i]));
-    if (f < q) {
-        u = min(f / q, kBelowOneD);
-        return i;
+// In [lo, hi]: the first entry i of the CDF at word `cdf` with cdf[i + 1] > u.
+uint envCdfFirstEndingAfter(uint cdf, uint lo, uint hi, double u) {
+    while (lo < hi) {
+        uint mid = (lo + hi) / 2u;
+        if (envExactWord(cdf + 2u * (mid + 1u)) > u)
+            hi = mid;
+        else
+            lo = mid + 1u;
     }
-    u = min((f - q) / (1.0LF - q), kBelowOneD);
-    return samplerWords[base + 2u * i + 1u];
+    return lo;
+}
+
+// The entry u draws from the n entries of the guided CDF at words `cdf` (n + 1 doubles) and
+// `guide` (n words), u rescaled into [0, 1) within it. The CPU's pickGuidedCdf, in the same double
+// operations.
+uint envCdfPick(uint cdf, uint guide, uint n, inout double u) {
+    uint k = min(uint(u * double(n)), n - 1u);
+    uint lo = envCdfFirstEndingAfter(cdf, max(samplerWords[guide + k], 1u) - 1u,
+                                     min(k + 1u < n ? samplerWords[guide + k + 1u] + 1u : n - 1u, n - 1u), u);
+    double c0 = envExactWord(cdf + 2u * lo), c1 = envExactWord(cdf + 2u * (lo + 1u));
+    if (!(c0 <= u && u < c1)) {
+        lo = envCdfFirstEndingAfter(cdf, 0u, n - 1u, u);
+        c0 = envExactWord(cdf + 2u * lo);
+        c1 = envExactWord(cdf + 2u * (lo + 1u));
+    }
+    double width = c1 - c0;
+    u = width > 0.0LF ? clamp((u - c0) / width, 0.0LF, kBelowOneD) : 0.0LF;
+    return lo;
 }
 
 double envExactTexelPdf(uint offset, uvec2 t) {
     uvec2 size = envExactSize(offset);
-    uint pdfs = offset + 2u + 2u * size.y + 2u * size.y + 2u * size.y * size.x;
+    uint pdfs = offset + 2u + 2u * size.y + 2u * (size.y + 1u) + size.y + 2u * size.y * (size.x + 1u) +
+                size.y * size.x;
     return envExactWord(pdfs + 2u * (t.y * size.x + t.x));
 }
 
@@ -51,9 +68,10 @@ double envExactPdf(uint offset, vec3 wi, vec2 cosSinYaw) {
 // An env-local direction.
 vec3 envExactSample(uint offset, dvec2 u) {
     uvec2 size = envExactSize(offset);
-    uint omega = offset + 2u, rows = omega + 2u * size.y, columns = rows + 2u * size.y;
-    uint y = envExactPick(rows, size.y, u.y);
-    uint x = envExactPick(columns + 2u * y * size.x, size.x, u.x);
+    uint omega = offset + 2u, rowCdf = omega + 2u * size.y, rowGuide = rowCdf + 2u * (size.y + 1u);
+    uint columnCdf = rowGuide + size.y, columnGuide = columnCdf + 2u * size.y * (size.x + 1u);
+    uint y = envCdfPick(rowCdf, rowGuide, size.y, u.y);
+    uint x = envCdfPick(columnCdf + 2u * y * (size.x + 1u), columnGuide + y * size.x, size.x, u.x);
     float c0 = cos(kPi * float(y) / float(size.y));
     double drop = envExactWord(omega + 2u * y) * double(size.x) / double(2.0 * kPi);
     float cosTheta = clamp(float(double(c0) - drop * u.y), -1.0, 1.0);

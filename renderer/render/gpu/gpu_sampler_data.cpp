@@ -129,15 +129,11 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 d.words.push_back(uint32_t(bits >> 32));
             }
         };
-        auto pushSlots = [&](const std::vector<EquirectEnvSampler::AliasSlot>& v) {
-            for (const EquirectEnvSampler::AliasSlot& s : v) {
-                d.words.push_back(std::bit_cast<uint32_t>(s.threshold));
-                d.words.push_back(s.alias);
-            }
-        };
         pushDoubles(exact.rowSolidAngle());
-        pushSlots(exact.rowAlias());
-        pushSlots(exact.columnAlias());
+        pushDoubles(exact.rowCdf());
+        d.words.insert(d.words.end(), exact.rowGuide().begin(), exact.rowGuide().end());
+        pushDoubles(exact.columnCdf());
+        d.words.insert(d.words.end(), exact.columnGuide().begin(), exact.columnGuide().end());
         pushDoubles(exact.pdfTable());
     }
     if (d.words.empty())

@@ -7,9 +7,10 @@
 //              at level kTailLevel (sampler_constants.h) as float bits at tailOffset (the
 //              mixture's tail estimate), then the exact env technique's tables at
 //              tailOffset + 4^kTailLevel (EquirectEnvSampler: width, height, its row solid
-//              angles (doubles as two words, low first), row alias table and the rows' column
-//              alias tables (two words a slot: threshold float bits, alias), texel pdfs
-//              (doubles); sampling/env_exact.glsl)
+//              angles (doubles as two words, low first), the rows' guided CDF (height + 1
+//              doubles, then height guide words) and each row's over its columns (height x
+//              (width + 1) doubles, then height x width guide words), texel pdfs (doubles);
+//              sampling/env_exact.glsl, render/sampling/guided_cdf.h)
 //              A `wavelet` material in product mode also has its axis bins' precomputed product
 //              pyramids there (precomputed_products.h), after its flat tables.
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).

@@ -1,5 +1,6 @@
 #include "render/sampling/equirect_env_sampler.h"
 
+#include "render/sampling/guided_cdf.h"
 #include "util/image.h"
 
 #include <algorithm>
@@ -10,62 +11,6 @@ namespace wavelit::render {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kBelowOne = 0x1.fffffffffffffp-1;
-
-using AliasSlot = EquirectEnvSampler::AliasSlot;
-
-// Vose's alias table over weights w[0..n) (all zero: uniform). Entries with weight 0 are never
-// drawn: their slots' thresholds are 0, and no slot aliases them (only "large" entries, at or
-// above the mean, take aliases).
-void buildAlias(const double* w, int n, AliasSlot* slots) {
-    double sum = 0.0;
-    int heaviest = 0;
-    for (int i = 0; i < n; ++i) {
-        sum += w[i];
-        if (w[i] > w[heaviest]) heaviest = i;
-    }
-    if (!(sum > 0.0)) {
-        for (int i = 0; i < n; ++i)
-            slots[i] = {1.0f, uint32_t(i)};
-        return;
-    }
-    std::vector<double> scaled(static_cast<size_t>(n));
-    std::vector<int> small, large;
-    for (int i = 0; i < n; ++i) {
-        scaled[size_t(i)] = w[i] * n / sum;
-        (scaled[size_t(i)] < 1.0 ? small : large).push_back(i);
-    }
-    while (!small.empty() && !large.empty()) {
-        const int s = small.back(), l = large.back();
-        small.pop_back();
-        slots[s] = {float(scaled[size_t(s)]), uint32_t(l)};
-        scaled[size_t(l)] = (scaled[size_t(l)] + scaled[size_t(s)]) - 1.0;
-        if (scaled[size_t(l)] < 1.0) {
-            large.pop_back();
-            small.push_back(l);
-        }
-    }
-    // Rounding leftovers hold ~1 of a slot each; a weightless one keeps none.
-    for (const std::vector<int>* rest : {&large, &small})
-        for (int i : *rest)
-            slots[i] = w[i] > 0.0 ? AliasSlot{1.0f, uint32_t(i)}
-                                  : AliasSlot{0.0f, uint32_t(heaviest)};
-}
-
-// The entry of slots[0..n) that u draws (the slot by u n, then the slot's coin by the remainder);
-// u rescaled into [0, 1) within what was chosen. Double, as env_exact.glsl envExactPick.
-int pick(const AliasSlot* slots, int n, double& u) {
-    const double s = u * double(n);
-    const int i = std::min(int(s), n - 1);
-    const double f = s - double(i);
-    const double q = double(slots[i].threshold);
-    if (f < q) {
-        u = std::min(f / q, kBelowOne);
-        return i;
-    }
-    u = std::min((f - q) / (1.0 - q), kBelowOne);
-    return int(slots[i].alias);
-}
 
 // 2 pi / w x (cos theta_y - cos theta_{y+1}), as a product of sines: no cancellation at the poles.
 double texelRowSolidAngle(int y, int w, int h) {
@@ -82,7 +27,8 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
     const int w = s.m_width, h = s.m_height;
     const glm::vec3 scale = env.intensity * env.tint;
     std::vector<double> weights(size_t(w) * size_t(h)), rowMass(static_cast<size_t>(h));
-    s.m_columnAlias.resize(size_t(h) * size_t(w));
+    s.m_columnCdf.reserve(size_t(h) * size_t(w + 1));
+    s.m_columnGuide.reserve(size_t(h) * size_t(w));
     s.m_rowOmega.resize(size_t(h));
     for (int y = 0; y < h; ++y) {
         const double omega = texelRowSolidAngle(y, w, h);
@@ -95,14 +41,13 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
             mass += weights[size_t(y) * size_t(w) + size_t(x)];
         }
         rowMass[size_t(y)] = mass;
-        buildAlias(&weights[size_t(y) * size_t(w)], w, &s.m_columnAlias[size_t(y) * size_t(w)]);
+        appendGuidedCdf(&weights[size_t(y) * size_t(w)], w, s.m_columnCdf, s.m_columnGuide);
     }
     double total = 0.0;
     for (double m : rowMass)
         total += m;
     s.m_lit = total > 0.0 && std::isfinite(total);
-    s.m_rowAlias.resize(size_t(h));
-    buildAlias(rowMass.data(), h, s.m_rowAlias.data());
+    appendGuidedCdf(rowMass.data(), h, s.m_rowCdf, s.m_rowGuide);
     s.m_pdf.assign(weights.size(), 0.0);
     if (s.m_lit)
         for (int y = 0; y < h; ++y)
@@ -118,13 +63,14 @@ double EquirectEnvSampler::texelPdf(int x, int y) const {
 }
 
 size_t EquirectEnvSampler::bytes() const {
-    return (m_rowAlias.size() + m_columnAlias.size()) * sizeof(AliasSlot) +
-           (m_rowOmega.size() + m_pdf.size()) * sizeof(double);
+    return (m_rowGuide.size() + m_columnGuide.size()) * sizeof(uint32_t) +
+           (m_rowCdf.size() + m_columnCdf.size() + m_rowOmega.size() + m_pdf.size()) * sizeof(double);
 }
 
 glm::dvec3 EquirectEnvSampler::sampleLocal(glm::dvec2 u, double& pdf) const {
-    const int y = pick(m_rowAlias.data(), m_height, u.y);
-    const int x = pick(&m_columnAlias[size_t(y) * size_t(m_width)], m_width, u.x);
+    const int y = pickGuidedCdf(m_rowCdf.data(), m_rowGuide.data(), m_height, u.y);
+    const int x = pickGuidedCdf(&m_columnCdf[size_t(y) * size_t(m_width + 1)],
+                                &m_columnGuide[size_t(y) * size_t(m_width)], m_width, u.x);
     // cos theta falls linearly across the row by omega w / (2 pi) (uniform in solid angle).
     const double c0 = std::cos(kPi * y / m_height);
     const double cosTheta =

@@ -2,17 +2,14 @@
 // tracers evaluate the environment as piecewise constant on the equirect texels (nearest lookup,
 // render/lights/cpu_environment.h); this draws texel (x, y) with probability proportional to its
 // luminance times its solid angle (2 pi / W x (cos theta_y - cos theta_{y+1})): the row by an
-// alias table over the rows (Walker; Vose's construction), the column by the row's own alias
-// table, then a point uniform in solid angle inside the texel. O(1) per draw, where the CDFs this
-// replaced took two binary searches (issue 12: a `mis` pass on lavapipe). The solid-angle pdf is
-// piecewise constant on the very texels the radiance is: probability / solid angle, tabulated per
-// texel in double (an O(1) lookup). Texels with zero radiance get zero probability (no floor):
-// `env` alone still covers every direction with light, and MIS with the BSDF covers the rest.
-// In the ENV-LOCAL frame (the yaw removed), like SamplerEnvironment. Two levels, not one table
-// over all W x H texels, so that the float u keeps ~15 bits per level for the coin and the point
-// inside the texel. Thresholds are floats: a slot's threshold is relative to the slot, so a sky
-// texel at 1e-9 of a sun's row keeps its digits; the realised probabilities differ from the
-// tabulated pdf by float rounding of the thresholds (~1e-7 relative).
+// inverse CDF over the rows, the column by the row's own CDF (guided_cdf.h: O(1) expected, and
+// monotone in u, so the passes' stratified numbers give stratified draws), then a point uniform in
+// solid angle inside the texel. The solid-angle pdf is piecewise constant on the very texels the
+// radiance is: probability / solid angle, tabulated per texel in double (an O(1) lookup). Texels
+// with zero radiance get zero probability (no floor): `env` alone still covers every direction
+// with light, and MIS with the BSDF covers the rest.
+// In the ENV-LOCAL frame (the yaw removed), like SamplerEnvironment. Two levels, not one CDF over
+// all W x H texels, so that the remainder of u keeps its digits for the point inside the texel.
 // The Vulkan tracer reads the tables as they are (gpu_sampler_data.h, env_exact.glsl).
 // Immutable after build; const methods are thread-safe.
 #pragma once
@@ -36,16 +33,13 @@ public:
     bool hasLight() const { return m_lit; }
     int width() const { return m_width; }
     int height() const { return m_height; }
-    // One alias-table slot: keep the slot's own entry with probability `threshold`, else take
-    // `alias`.
-    struct AliasSlot {
-        float threshold = 1.0f;
-        uint32_t alias = 0;
-    };
-    // rows: height slots; columns: height rows of width slots; rowSolidAngle: one texel's per
-    // row; pdf: each texel's solid-angle pdf, row-major.
-    const std::vector<AliasSlot>& rowAlias() const { return m_rowAlias; }
-    const std::vector<AliasSlot>& columnAlias() const { return m_columnAlias; }
+    // rowCdf / rowGuide: the rows' guided CDF (height + 1 doubles, height words); columnCdf /
+    // columnGuide: each row's over its columns (height x (width + 1) doubles, height x width
+    // words); rowSolidAngle: one texel's per row; pdf: each texel's solid-angle pdf, row-major.
+    const std::vector<double>& rowCdf() const { return m_rowCdf; }
+    const std::vector<uint32_t>& rowGuide() const { return m_rowGuide; }
+    const std::vector<double>& columnCdf() const { return m_columnCdf; }
+    const std::vector<uint32_t>& columnGuide() const { return m_columnGuide; }
     const std::vector<double>& rowSolidAngle() const { return m_rowOmega; }
     const std::vector<double>& pdfTable() const { return m_pdf; }
     size_t bytes() const;
@@ -61,8 +55,8 @@ public:
 private:
     int m_width = 0, m_height = 0;
     bool m_lit = false;
-    std::vector<AliasSlot> m_rowAlias, m_columnAlias;
-    std::vector<double> m_rowOmega, m_pdf;
+    std::vector<double> m_rowCdf, m_columnCdf, m_rowOmega, m_pdf;
+    std::vector<uint32_t> m_rowGuide, m_columnGuide;
 };
 
 } // namespace wavelit::render
