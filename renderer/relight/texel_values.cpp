@@ -9,19 +9,26 @@ namespace {
 
 // The local directions of one point's batch, structure of arrays (what evalBatch reads), and
 // where each texel's directions start: one (the centre) or kSub^2 (a narrow lobe's texel).
+// Sized once per thread for the worst case and written by index (push_back's capacity checks
+// were a sixth of a roughness edit).
 struct DirectionBatch {
     std::vector<float> x, y, z;
     std::vector<uint32_t> first; // per texel, + the end
-    void clear() {
-        x.clear();
-        y.clear();
-        z.clear();
-        first.clear();
+    size_t size = 0;
+    void reserve(size_t texels, size_t directions) {
+        if (x.size() < directions) {
+            x.resize(directions);
+            y.resize(directions);
+            z.resize(directions);
+        }
+        if (first.size() < texels + 1) first.resize(texels + 1);
+        size = 0;
     }
     void push(const glm::vec3& l) {
-        x.push_back(l.x);
-        y.push_back(l.y);
-        z.push_back(l.z);
+        x[size] = l.x;
+        y[size] = l.y;
+        z[size] = l.z;
+        ++size;
     }
 };
 
@@ -53,11 +60,13 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
     const glm::vec3 wo = frame.toLocal(p.wo);
     const glm::vec3 mirror(-wo.x, -wo.y, wo.z);
     constexpr int kCount = TexelDirections::kSub * TexelDirections::kSub;
-    out.texel.clear();
-    dirs.clear();
+    const size_t gridTexels = ctx.dirs->count();
+    dirs.reserve(gridTexels, gridTexels * (m.narrow ? kCount : 1));
+    out.texel.resize(gridTexels);
+    size_t texels = 0;
     forEachVisibleTexel(s, [&](size_t t) {
-        out.texel.push_back(uint32_t(t));
-        dirs.first.push_back(uint32_t(dirs.x.size()));
+        out.texel[texels] = uint32_t(t);
+        dirs.first[texels++] = uint32_t(dirs.size);
         const glm::vec3 local = toLocal(frame, ctx.dirs->direction(t));
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
             const glm::vec3* sub = ctx.dirs->subDirections(t);
@@ -66,8 +75,9 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
             dirs.push(local);
         }
     });
-    const size_t n = dirs.x.size();
-    dirs.first.push_back(uint32_t(n));
+    out.texel.resize(texels);
+    const size_t n = dirs.size;
+    dirs.first[texels] = uint32_t(n);
     const plugins::BrdfDirections wi{dirs.x.data(), dirs.y.data(), dirs.z.data(), n};
     const bool one = withBlack && m.oneEval; // f(red): white in red, black in green (evalPair)
     m.brdf->evalBatch(one ? m.red : m.params, wo, wi, f.values(n));
@@ -76,7 +86,6 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
     // f and f(black) at direction i, as the per-texel evaluation gave them.
     auto white = [&](size_t i) { return one ? glm::vec3(f.r[i]) : f.at(i); };
     auto black = [&](size_t i) { return one ? glm::vec3(f.g[i]) : two ? f0.at(i) : glm::vec3(0.0f); };
-    const size_t texels = out.texel.size();
     out.white.resize(texels);
     out.black.resize(withBlack ? texels : 0);
     for (size_t j = 0; j < texels; ++j) {
