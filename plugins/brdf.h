@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <span>
@@ -119,6 +120,22 @@ struct BrdfGpuTwin {
     float (*typeParameter)(const BrdfParams&) = nullptr;
 };
 
+// Many directions for evalBatch, as three arrays (structure of arrays: what a vectorised loop
+// reads), `count` entries each, in the local shading frame like eval's wi.
+struct BrdfDirections {
+    const float* x = nullptr;
+    const float* y = nullptr;
+    const float* z = nullptr;
+    size_t count = 0;
+};
+
+// evalBatch's output: f per direction, one array per channel (`count` entries each).
+struct BrdfValues {
+    float* r = nullptr;
+    float* g = nullptr;
+    float* b = nullptr;
+};
+
 class Brdf {
 public:
     virtual ~Brdf() = default;
@@ -129,6 +146,20 @@ public:
     virtual BrdfGpuTwin gpuTwin() const = 0;
 
     virtual glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const = 0;
+    // eval at every wi of `wi` for one wo: out[i] = eval(p, wo, wi[i]) to float rounding (the
+    // overrides compute the same operations in the same order, so in practice bit for bit). The
+    // relighting preview evaluates ~500 directions per point this way (docs/relighting.md §7.0f):
+    // one call instead of one virtual call each, and a loop the compiler vectorises. This default
+    // loops over eval, so a plugin without an override still works.
+    virtual void evalBatch(const BrdfParams& p, const glm::vec3& wo, const BrdfDirections& wi,
+                           const BrdfValues& out) const {
+        for (size_t i = 0; i < wi.count; ++i) {
+            const glm::vec3 f = eval(p, wo, glm::vec3(wi.x[i], wi.y[i], wi.z[i]));
+            out.r[i] = f.x;
+            out.g[i] = f.y;
+            out.b[i] = f.z;
+        }
+    }
     virtual BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const = 0;
     virtual float pdf(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const = 0;
     virtual std::optional<glm::vec2> invert(const BrdfParams& p, const glm::vec3& wo,

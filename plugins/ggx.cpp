@@ -45,6 +45,10 @@ public:
     glm::vec3 reflectance(const BrdfParams& p, float cosThetaD) const override {
         return schlick(p.baseColor, cosThetaD);
     }
+    void evalBatch(const BrdfParams& p, const glm::vec3& wo, const BrdfDirections& wi,
+                   const BrdfValues& out) const override {
+        evalLobeBatch(p, wo, wi, out, SchlickBatch{p.baseColor});
+    }
 };
 
 } // namespace

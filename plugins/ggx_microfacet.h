@@ -12,7 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -79,6 +81,73 @@ inline std::optional<glm::vec2> invertVisibleNormal(const glm::vec3& wo, float a
     if (phi < 0.0f) phi += 2.0f * util::kPi;
     return glm::vec2(std::min(p1 * p1 + p2 * p2, 1.0f), std::min(phi / (2.0f * util::kPi), 1.0f));
 }
+
+// GgxLobe::eval at many wi (Brdf::evalBatch) with the reflectance R(cosθd) of `reflect`
+// (reflect(c, r, g, b) writes R's channels): one branch-free loop the compiler vectorises (SSE2,
+// four directions a step), the same operations in the same order as eval — so the same floats —
+// with 0 selected where wi is at or below the horizon. The arrays are restrict parameters (GCC
+// ignores restrict on local pointers and would otherwise version the loop on 15 alias checks).
+template <class Reflect>
+void evalLobeLoop(float a2, const glm::vec3& wo, size_t n, const float* __restrict x, const float* __restrict y,
+                  const float* __restrict z, float* __restrict outR, float* __restrict outG,
+                  float* __restrict outB, Reflect reflect) {
+    const float onePlusLambdaO = 1.0f + smithLambda(wo, a2);
+    const float fourCosO = 4.0f * wo.z;
+    const float ox = wo.x, oy = wo.y, oz = wo.z;
+    for (size_t i = 0; i < n; ++i) {
+        const float wx = x[i], wy = y[i], wz = z[i];
+        // h = normalize(wo + wi), as glm: v * (1 / sqrt(dot(v, v))).
+        const float sx = ox + wx, sy = oy + wy, sz = oz + wz;
+        const float inv = 1.0f / std::sqrt(sx * sx + sy * sy + sz * sz);
+        const float hx = sx * inv, hy = sy * inv, hz = sz * inv;
+        const float tan2 = (wx * wx + wy * wy) / (wz * wz);
+        const float lambdaI = 0.5f * (-1.0f + std::sqrt(1.0f + a2 * tan2));
+        const float g2 = 1.0f / (onePlusLambdaO + lambdaI);
+        const float cosD = wx * hx + wy * hy + wz * hz;
+        const float d = hx * hx + hy * hy + a2 * hz * hz;
+        const float dg = a2 / (util::kPi * d * d) * g2;
+        const float den = fourCosO * wz;
+        float r, g, b;
+        reflect(cosD, r, g, b);
+        outR[i] = dg * r / den;
+        outG[i] = dg * g / den;
+        outB[i] = dg * b / den;
+    }
+    // eval's early 0 below the horizon, as a second pass and a bit mask (+0 there): selected in
+    // the loop above, the lanes' work (inf / NaN there) would be sunk into the branch, and a
+    // select here becomes a conditional store; either leaves the loop scalar.
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t keep = z[i] > 0.0f ? ~uint32_t(0) : 0u;
+        outR[i] = std::bit_cast<float>(std::bit_cast<uint32_t>(outR[i]) & keep);
+        outG[i] = std::bit_cast<float>(std::bit_cast<uint32_t>(outG[i]) & keep);
+        outB[i] = std::bit_cast<float>(std::bit_cast<uint32_t>(outB[i]) & keep);
+    }
+}
+
+template <class Reflect>
+void evalLobeBatch(const BrdfParams& p, const glm::vec3& wo, const BrdfDirections& wi, const BrdfValues& out,
+                   Reflect reflect) {
+    if (wo.z <= 0.0f) {
+        for (size_t i = 0; i < wi.count; ++i) out.r[i] = out.g[i] = out.b[i] = 0.0f;
+        return;
+    }
+    const float a = alphaOf(p);
+    evalLobeLoop(a * a, wo, wi.count, wi.x, wi.y, wi.z, out.r, out.g, out.b, reflect);
+}
+
+// Schlick's Fresnel for evalLobeBatch: schlick() per channel, with min / max for std::clamp
+// (the same value for every finite cosine; they vectorise).
+struct SchlickBatch {
+    glm::vec3 f0;
+    void operator()(float cosTheta, float& r, float& g, float& b) const {
+        const float m = std::min(std::max(1.0f - cosTheta, 0.0f), 1.0f);
+        const float m2 = m * m;
+        const float m5 = m2 * m2 * m;
+        r = f0.x + (1.0f - f0.x) * m5;
+        g = f0.y + (1.0f - f0.y) * m5;
+        b = f0.z + (1.0f - f0.z) * m5;
+    }
+};
 
 // The microfacet lobe of `ggx` and `glossy`: f = D G2 R / (4 cosθo cosθi), where the
 // reflectance R is the one thing they differ in (Schlick's Fresnel, or the colour alone).

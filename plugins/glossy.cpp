@@ -28,6 +28,15 @@ public:
         return {"glossy.glsl", "glossySample", "glossyEval", "glossyPdf"};
     }
     glm::vec3 reflectance(const BrdfParams& p, float) const override { return p.baseColor; }
+    void evalBatch(const BrdfParams& p, const glm::vec3& wo, const BrdfDirections& wi,
+                   const BrdfValues& out) const override {
+        const glm::vec3 c = p.baseColor;
+        evalLobeBatch(p, wo, wi, out, [c](float, float& r, float& g, float& b) {
+            r = c.x;
+            g = c.y;
+            b = c.z;
+        });
+    }
 };
 
 } // namespace

@@ -16,6 +16,17 @@ constexpr std::array<BrdfParameterInfo, 1> kParameters{{
      "Diffuse albedo: the fraction of light reflected, per channel"},
 }};
 
+// out = f where z > 0, else 0; restrict parameters, so GCC vectorises it without alias checks.
+void selectAbove(const glm::vec3& f, size_t n, const float* __restrict z, float* __restrict r, float* __restrict g,
+                 float* __restrict b) {
+    for (size_t i = 0; i < n; ++i) {
+        const bool above = z[i] > 0.0f;
+        r[i] = above ? f.x : 0.0f;
+        g[i] = above ? f.y : 0.0f;
+        b[i] = above ? f.z : 0.0f;
+    }
+}
+
 class Lambert final : public Brdf {
 public:
     const char* name() const override { return "lambert"; }
@@ -35,6 +46,13 @@ public:
     glm::vec3 eval(const BrdfParams& p, const glm::vec3& wo, const glm::vec3& wi) const override {
         if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
         return p.baseColor * util::kInvPi;
+    }
+
+    // eval per direction: f is constant above the horizon, so this is a select per entry.
+    void evalBatch(const BrdfParams& p, const glm::vec3& wo, const BrdfDirections& wi,
+                   const BrdfValues& out) const override {
+        const glm::vec3 f = wo.z <= 0.0f ? glm::vec3(0.0f) : p.baseColor * util::kInvPi;
+        selectAbove(f, wi.count, wi.z, out.r, out.g, out.b);
     }
 
     BrdfSample sample(const BrdfParams& p, const glm::vec3& wo, float u1, float u2) const override {

@@ -1,6 +1,7 @@
 #include "relight/point_transfer.h"
 
 #include "relight/light_projection.h"
+#include "relight/texel_values.h"
 #include "relight/transfer_compression.h"
 #include "util/hemisphere_sampling.h"
 
@@ -14,17 +15,6 @@ namespace wavelit::relight {
 namespace {
 
 constexpr float kRayOffset = 1e-4f; // docs/estimator.md's scale-aware epsilon
-
-const ResolvedMaterial& materialOf(const TransferContext& ctx, const PreviewPoint& p) {
-    const auto& m = *ctx.materials;
-    return m[std::min<size_t>(p.material, m.size() - 1)];
-}
-
-bool blockedByOthers(const PointState& s, size_t texel) {
-    for (const Occlusion& o : s.occlusions)
-        if (testBit(o.blocked, texel)) return true;
-    return false;
-}
 
 // f at the material's primary parameters, and at black when `black` is given: one evaluation
 // for a grey-affine BRDF (ResolvedMaterial::oneEval), else one per parameter set.
@@ -69,15 +59,6 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
 }
 
 bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) && !blockedByOthers(s, texel); }
-
-// visit(t) for every visible texel t (lit, no other object in the way), walking the lit bits.
-template <class Visit> void forEachVisibleTexel(const PointState& s, Visit&& visit) {
-    for (size_t w = 0; w < s.lit.size(); ++w)
-        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
-            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            if (!blockedByOthers(s, t)) visit(t);
-        }
-}
 
 // visit(entry, white, black) for every entry of the light that the point sees, in projection
 // order, with its contribution to <T, L_k> (black only when `black`): lightTermWith's sum term by
@@ -193,46 +174,42 @@ void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointSta
 
 // rebuildTransfer for a grey-affine material: f(white) and f(black) are grey (one evaluation
 // gives both), so both T's are one channel each.
-static void rebuildGreyTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
+static void rebuildGreyTransfer(const TransferContext& ctx, PointState& s,
+                                const TexelValues& values) {
     thread_local std::vector<double> texels, texels0;
-    const ResolvedMaterial& m = materialOf(ctx, p);
     const int level = ctx.dirs->level();
     const size_t count = ctx.dirs->count();
     texels.assign(count, 0.0);
     texels0.assign(count, 0.0);
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
     const double finest = std::ldexp(1.0, -level);
-    forEachVisibleTexel(s, [&](size_t t) {
-        glm::vec3 f0(0.0f);
-        texels[t] = double(unshadowed(ctx, p, frame, wo, t, m.params, &m.black, &f0).x) * finest;
-        texels0[t] = double(f0.x) * finest;
-    });
+    for (size_t j = 0; j < values.texel.size(); ++j) {
+        texels[values.texel[j]] = double(values.white[j].x) * finest;
+        texels0[values.texel[j]] = double(values.black[j].x) * finest;
+    }
     compressGrey(texels, level, ctx.keep, s.transfer);
     compressGrey(texels0, level, ctx.keep, s.transfer0);
 }
 
 void rebuildTransfer(const TransferContext& ctx, const PreviewPoint& p, PointState& s) {
     thread_local std::vector<glm::dvec3> texels, texels0;
+    thread_local TexelValues values;
     const ResolvedMaterial& m = materialOf(ctx, p);
     const bool affine = m.colourUse == ColourUse::Affine;
     const int level = ctx.dirs->level();
     const size_t count = ctx.dirs->count();
+    visibleTexelValues(ctx, p, s, affine, values);
     if (affine && m.oneEval) {
-        rebuildGreyTransfer(ctx, p, s);
+        rebuildGreyTransfer(ctx, s, values);
         return;
     }
     texels.assign(count, glm::dvec3(0.0));
     if (affine) texels0.assign(count, glm::dvec3(0.0));
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
     // Finest scaling coefficients: 2^-n times the texel value (haar.h).
     const double finest = std::ldexp(1.0, -level);
-    forEachVisibleTexel(s, [&](size_t t) {
-        glm::vec3 f0(0.0f);
-        texels[t] = glm::dvec3(unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0)) * finest;
-        if (affine) texels0[t] = glm::dvec3(f0) * finest;
-    });
+    for (size_t j = 0; j < values.texel.size(); ++j) {
+        texels[values.texel[j]] = glm::dvec3(values.white[j]) * finest;
+        if (affine) texels0[values.texel[j]] = glm::dvec3(values.black[j]) * finest;
+    }
     compressMaybeGrey(texels, level, ctx.keep, s.transfer);
     if (affine) compressMaybeGrey(texels0, level, ctx.keep, s.transfer0);
     else s.transfer0 = SparseTransfer{};
@@ -321,19 +298,11 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, ui
 
 void visibleTransferTexels(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                            std::vector<glm::vec3>& white, std::vector<glm::vec3>& black) {
-    const ResolvedMaterial& m = materialOf(ctx, p);
-    const bool affine = m.colourUse == ColourUse::Affine;
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
-    white.clear();
-    black.clear();
-    forEachVisibleTexel(s, [&](size_t t) {
-        glm::vec3 f0(0.0f);
-        const glm::vec3 f = unshadowed(ctx, p, frame, wo, t, m.params, affine ? &m.black : nullptr, &f0);
-        // rebuildGreyTransfer keeps one channel of each (white in red, black in green: evalPair).
-        white.push_back(affine && m.oneEval ? glm::vec3(f.x) : f);
-        if (affine) black.push_back(m.oneEval ? glm::vec3(f0.x) : f0);
-    });
+    thread_local TexelValues values;
+    // rebuildTransfer's values: a grey-affine BRDF's are grey already (one channel of each kept).
+    visibleTexelValues(ctx, p, s, materialOf(ctx, p).colourUse == ColourUse::Affine, values);
+    white = values.white;
+    black = values.black;
 }
 
 void seenLightContributions(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,

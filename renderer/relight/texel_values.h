@@ -1,0 +1,48 @@
+// f x cosine at every visible texel of a preview point, for the BRDF's primary parameters and
+// (an affine BRDF) black: the per-texel values T is made of (point_transfer.h), in one batched BRDF
+// call per parameter set (plugins/brdf.h evalBatch) instead of one virtual eval per texel. The
+// same floats as evaluating texel by texel (docs/relighting.md §7.0f); from-scratch builds,
+// roughness edits and the shadow field's drag cache all take their T from here.
+#pragma once
+
+#include "relight/point_transfer.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace wavelit::relight {
+
+inline const ResolvedMaterial& materialOf(const TransferContext& ctx, const PreviewPoint& p) {
+    const auto& m = *ctx.materials;
+    return m[std::min<size_t>(p.material, m.size() - 1)];
+}
+
+inline bool blockedByOthers(const PointState& s, size_t texel) {
+    for (const Occlusion& o : s.occlusions)
+        if (testBit(o.blocked, texel)) return true;
+    return false;
+}
+
+// visit(t) for every visible texel t (lit, no other object in the way), walking the lit bits.
+template <class Visit> void forEachVisibleTexel(const PointState& s, Visit&& visit) {
+    for (size_t w = 0; w < s.lit.size(); ++w)
+        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
+            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
+            if (!blockedByOthers(s, t)) visit(t);
+        }
+}
+
+// The visible texels of a point, ascending, with f x cosine at each: `white` for the material's
+// params, `black` for its black parameters when asked (affine BRDFs; else left empty). A
+// grey-affine BRDF (ResolvedMaterial::oneEval) gives grey values from one evaluation. A narrow
+// lobe's texels near the mirror direction average TexelDirections::kSub^2 sub-directions.
+struct TexelValues {
+    std::vector<uint32_t> texel;
+    std::vector<glm::vec3> white, black;
+};
+void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
+                        TexelValues& out);
+
+} // namespace wavelit::relight
