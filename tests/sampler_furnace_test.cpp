@@ -246,7 +246,9 @@ const SweepCase kSweep[] = {
     // mis needs more passes since its env shadow ray's Russian roulette (docs/estimator.md): the
     // dielectric's weak lobe is where the roulette fires most (747 needed, was ~230).
     {render::SamplerKind::Mis, kGgxDielectric, 1100, Bound::OnePercent},
-    {render::SamplerKind::Wavelet, kLambert, 12, Bound::OnePercent},
+    // Lambert is EnvMis under every env since round 5 (docs/performance.md): `mis`'s estimator
+    // with the same random numbers, so `mis`'s count (12 passes measured 24 needed).
+    {render::SamplerKind::Wavelet, kLambert, 120, Bound::OnePercent},
     {render::SamplerKind::Wavelet, kGgxMirrorish, 32, Bound::OnePercent},
     // 13-17 needed since round 4 (EnvMis here, `mis`'s roulette): the margin above.
     {render::SamplerKind::Wavelet, kGgx03, 40, Bound::OnePercent},

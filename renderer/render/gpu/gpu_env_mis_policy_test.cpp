@@ -1,8 +1,11 @@
-// The `wavelet` policy EnvMis (issue 12, docs/performance.md "Wavelet pass cost, round 3"): a
-// scene whose every material has env and lobe of very different extent draws from no product.
+// The `wavelet` policy EnvMis (issue 12, docs/performance.md "Wavelet pass cost, round 3" and
+// "Equal time, round 5"): a scene whose every material is EnvMis (hemisphere-wide lobes under any
+// env; mirror lobes far narrower than the env) draws from no product.
 // Its vertices use `mis`'s technique with the same random numbers, so a `wavelet` render equals
 // the `mis` render bit for bit on both tracers, and the Vulkan kernel is compiled without the
 // product code (it must still compile and run under validation).
+#include "render/sampling/product/env_product_tables.h"
+#include "render/sampling/sampler_environment.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/testing/sampler_test_envs.h"
 #include "render/testing/test_integrator.h"
@@ -15,18 +18,21 @@
 namespace wavelit::render {
 namespace {
 
-// A Lambert sphere under a sky whose sun holds the light: the env's effective solid angle is far
-// below the cosine lobe's, so the policy is EnvMis.
-std::shared_ptr<scene::Scene> lambertUnderSun() {
+// A Lambert sphere under a sky whose sun is `sunRatio` times the sky's mean: the policy is EnvMis
+// whether the sun holds the light (1e5) or the sky does (1: an env as wide as the cosine lobe).
+std::shared_ptr<scene::Scene> lambertUnderSky(double sunRatio) {
     scene::Material m;
     m.id = 1;
     m.name = "matte";
     m.brdf = "lambert";
     m.baseColor = glm::vec3(0.7f);
     auto s = makeFurnaceScene(m, glm::vec3(1.0f), 32, 16);
-    s->lighting.environment = makeSunSkyEnvironment(64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e5);
+    s->lighting.environment =
+        makeSunSkyEnvironment(64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), sunRatio);
     return s;
 }
+
+std::shared_ptr<scene::Scene> lambertUnderSun() { return lambertUnderSky(1e5); }
 
 util::ImageRGB render(const std::shared_ptr<scene::Scene>& scene, SamplerKind kind, DeviceChoice device) {
     RenderOptions o;
@@ -60,7 +66,7 @@ void expectSame(const util::ImageRGB& a, const util::ImageRGB& b) {
         sum += a.pixels[i].g;
         differ += a.pixels[i] != b.pixels[i] ? 1u : 0u;
     }
-    EXPECT_GT(sum, 0.0) << "the sun lights the sphere";
+    EXPECT_GT(sum, 0.0) << "the sky lights the sphere";
     EXPECT_EQ(differ, 0u);
 }
 
@@ -76,11 +82,39 @@ TEST(WaveletEnvMisPolicy, AllEnvMisSceneRendersAsMisOnVulkanWithoutTheProductCod
                render(scene, SamplerKind::Mis, DeviceChoice::Vulkan));
 }
 
+// Under a soft sky the Lambert lobe is EnvMis too (round 5): the same estimator as `mis`.
+TEST(WaveletEnvMisPolicy, LambertUnderASoftSkyRendersAsMisOnTheCpu) {
+    const auto scene = lambertUnderSky(1.0);
+    expectSame(render(scene, SamplerKind::Wavelet, DeviceChoice::Cpu),
+               render(scene, SamplerKind::Mis, DeviceChoice::Cpu));
+}
+
+TEST(WaveletEnvMisPolicy, LambertUnderASoftSkyRendersAsMisOnVulkan) {
+    const auto scene = lambertUnderSky(1.0);
+    expectSame(render(scene, SamplerKind::Wavelet, DeviceChoice::Vulkan),
+               render(scene, SamplerKind::Mis, DeviceChoice::Vulkan));
+}
+
 // An edit that brings a product into a kernel compiled without the code answers Unsupported with
 // no file: the contract RenderSession recreates the tracer on (render_session.cpp), as for a BRDF
 // plugin the kernel lacks.
 TEST(WaveletEnvMisPolicy, AnEditThatNeedsTheProductCodeAsksForANewTracer) {
-    const auto scene = lambertUnderSun();
+    // A ggx r = 0.2 sphere under a constant env: the env is far wider than the mirror lobe, so the
+    // policy is EnvMis and the kernel is compiled without the product code (with ggx's twin).
+    scene::Material m;
+    m.id = 1;
+    m.name = "gold";
+    m.brdf = "ggx";
+    m.roughness = 0.2f;
+    m.baseColor = glm::vec3(0.9f);
+    auto scene = makeFurnaceScene(m, glm::vec3(1.0f), 32, 16);
+    auto flat = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(1.0f));
+    scene->lighting.environment.image = flat;
+    const plugins::BrdfParams params(m.baseColor, m.roughness);
+    ASSERT_EQ(chooseProductPolicy(*plugins::findBrdf("ggx"), params,
+                                  SamplerEnvironment::build(scene->lighting.environment))
+                  .mode,
+              ProductMode::EnvMis);
     RenderOptions o;
     o.width = 16;
     o.height = 16;
@@ -90,13 +124,18 @@ TEST(WaveletEnvMisPolicy, AnEditThatNeedsTheProductCodeAsksForANewTracer) {
     o.validation = true;
     auto gpu = makeTestIntegrator(scene, o);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    // The same sky with a sun no brighter than its mean: the env spreads over steradians, the
-    // cosine lobe's product pays again (same plugin: only the product code is missing).
-    auto soft = std::make_shared<scene::Scene>(*scene);
-    soft->lighting.environment =
-        makeSunSkyEnvironment(64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1.0);
+    // The same env with one bright texel holding the light: env and lobe of comparable extent,
+    // the mirror lobe's product pays (same plugin: only the product code is missing).
+    auto spiky = std::make_shared<util::ImageRGB>(*flat);
+    spiky->at(40, 30) = glm::vec3(1e4f);
+    auto edited = std::make_shared<scene::Scene>(*scene);
+    edited->lighting.environment.image = spiky;
+    ASSERT_EQ(chooseProductPolicy(*plugins::findBrdf("ggx"), params,
+                                  SamplerEnvironment::build(edited->lighting.environment))
+                  .mode,
+              ProductMode::Product);
     const auto status =
-        (*gpu)->setScene(soft, std::make_shared<const scene::Bvh>(scene::buildBvh(*soft)));
+        (*gpu)->setScene(edited, std::make_shared<const scene::Bvh>(scene::buildBvh(*edited)));
     ASSERT_FALSE(status.ok());
     EXPECT_EQ(status.error().kind, util::ErrorKind::Unsupported);
     EXPECT_TRUE(status.error().file.empty());

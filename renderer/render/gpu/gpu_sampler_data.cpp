@@ -26,7 +26,10 @@ namespace {
 // the tables were up to 4000x worse than the per-hit product (docs/brdfs.md, last section):
 // a mirror lobe seen at 45 degrees is compressed by cos 45 across the plane of incidence and
 // its axis is up to half an axis bin off the bin's centre, and a measured table's glossy lobe
-// about the normal sits at the mirror direction, not at the normal.
+// about the normal sits at the mirror direction, not at the normal. Since round 5
+// (docs/performance.md "Equal time, round 5") chooseProductPolicy makes every hemisphere-wide
+// lobe EnvMis, so no material reaches this in product mode: the pyramids are unused until the
+// policy gives such a lobe a product again.
 bool readsPrecomputedPyramids(const ProductPolicy& policy) {
     return policy.aroundNormal && policy.lobeHalfWidth >= 0.5 * std::numbers::pi - 1e-9;
 }

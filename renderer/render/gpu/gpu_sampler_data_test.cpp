@@ -1,7 +1,8 @@
 // Which `wavelet` materials the Vulkan tracer lets read the precomputed axis-bin pyramids, and
 // which get the larger defensive BSDF share (gpu_sampler_data.h), decided from the lobe traits
-// alone: only a lobe about the normal as wide as the hemisphere (Lambert) reads the pyramids;
-// mirror lobes and a measured table's lobe build their product per hit; a mirror lobe whose cap
+// alone: only a lobe about the normal as wide as the hemisphere (Lambert) could read the
+// pyramids, and since round 5 (docs/performance.md) such a lobe is EnvMis under every env, so
+// none does; mirror lobes and a measured table's lobe build their product per hit; a mirror lobe whose cap
 // is under kGpuNarrowLobeCap gets kGpuNarrowLobeMixBsdf, the others the policy's share. The
 // variance figures behind the rule are in docs/brdfs.md ("The Vulkan `wavelet` on these plugins").
 #include "render/gpu/gpu_sampler_data.h"
@@ -21,82 +22,74 @@
 namespace wavelit::render {
 namespace {
 
-TEST(GpuSamplerData, OnlyHemisphereWideLobesAboutTheNormalReadThePrecomputedPyramids) {
+TEST(GpuSamplerData, ProductLobesBuildTheirProductPerHitWithThePolicysShare) {
     // 256 x 128: env texels of 0.025 rad, so blinn r = 0.2 (half-width 0.08) is sampled by the
     // product, not left to BSDF sampling.
     auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
     image->at(40, 30) = glm::vec3(1e4f); // a small bright source: the env is lit and uneven
     scene::Environment env;
     env.image = image;
-    // The cosine lobe keeps its product only under an env at least 1/16 as wide as itself
-    // (ProductMode::EnvMis, kEnvMisSolidAngleRatio): a bright upper half for the Lambert case.
-    auto softImage = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 256; ++x)
-            softImage->at(x, y) = glm::vec3(1.0f);
-    scene::Environment softEnv;
-    softEnv.image = softImage;
     auto table = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
                                        "/brdfs/glossy-copper-r05.binary");
     ASSERT_TRUE(table.ok()) << table.error().message();
 
     struct Expect {
         SamplerMaterial material;
-        bool readsPyramids;
         double mixBsdf;
     };
     const std::vector<Expect> cases = {
-        {{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}, true, kWaveletBsdfShare},
-        {{"ggx r=0.2 (cap 0.36)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}}, false,
+        {{"ggx r=0.2 (cap 0.36)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}}, kWaveletBsdfShare},
+        {{"ggx r=0.5 (whole sphere)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}},
          kWaveletBsdfShare},
-        {{"ggx r=0.5 (whole sphere)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}}, false,
-         kWaveletBsdfShare},
-        {{"blinn r=0.2 (cap 0.24)", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.2f}}, false,
+        {{"blinn r=0.2 (cap 0.24)", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.2f}},
          kGpuNarrowLobeMixBsdf},
-        {{"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}}, false,
+        {{"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}},
          kWaveletBsdfShare},
     };
-    for (const bool soft : {true, false}) {
-        std::vector<SamplerMaterial> materials;
-        std::vector<const Expect*> expects;
-        SceneSamplerTables scene;
-        for (const Expect& c : cases) {
-            if ((c.material.name == "lambert") != soft)
-                continue;
-            scene.samplerIndexOfMaterial.push_back(int(materials.size()));
-            materials.push_back(c.material);
-            expects.push_back(&c);
-        }
-        scene.tables = DirectionSamplerTables::build(soft ? softEnv : env, materials,
-                                                     SamplerKind::Wavelet);
-        auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, materials.size());
-        ASSERT_TRUE(packed.ok()) << packed.error().message();
-        for (size_t i = 0; i < expects.size(); ++i) {
-            const GpuSamplerMaterial& g = packed->materials[i];
-            SCOPED_TRACE(expects[i]->material.name);
-            ASSERT_EQ(g.mode, kGpuSamplerProduct);
-            EXPECT_EQ(g.precomputedBins > 0, expects[i]->readsPyramids);
-            EXPECT_FLOAT_EQ(g.mixBsdf, float(expects[i]->mixBsdf));
-        }
+    std::vector<SamplerMaterial> materials;
+    SceneSamplerTables scene;
+    for (const Expect& c : cases) {
+        scene.samplerIndexOfMaterial.push_back(int(materials.size()));
+        materials.push_back(c.material);
+    }
+    scene.tables = DirectionSamplerTables::build(env, materials, SamplerKind::Wavelet);
+    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, materials.size());
+    ASSERT_TRUE(packed.ok()) << packed.error().message();
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const GpuSamplerMaterial& g = packed->materials[i];
+        SCOPED_TRACE(cases[i].material.name);
+        ASSERT_EQ(g.mode, kGpuSamplerProduct);
+        EXPECT_EQ(g.precomputedBins, 0u);
+        EXPECT_FLOAT_EQ(g.mixBsdf, float(cases[i].mixBsdf));
     }
 }
 
-// The same Lambert lobe under the spiky env, whose light sits in one texel: env sampling follows
-// the integrand, so the policy is EnvMis, packed as such with no tables of its own.
-TEST(GpuSamplerData, ALambertLobeUnderASunIsPackedEnvMis) {
-    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
-    image->at(40, 30) = glm::vec3(1e4f);
-    scene::Environment env;
-    env.image = image;
-    SceneSamplerTables scene;
-    scene.samplerIndexOfMaterial = {0};
-    scene.tables = DirectionSamplerTables::build(
-        env, {{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}}, SamplerKind::Wavelet);
-    EXPECT_FALSE(scene.tables->anyProduct());
-    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, 1);
-    ASSERT_TRUE(packed.ok()) << packed.error().message();
-    EXPECT_EQ(packed->materials[0].mode, kGpuSamplerEnvMis);
-    EXPECT_EQ(packed->materials[0].precomputedBins, 0u);
+// A Lambert lobe is EnvMis under every lit env (round 5), packed as such with no tables of its
+// own: under the spiky env, whose light sits in one texel (env sampling follows the integrand),
+// and under a soft one (a bright upper half: effective solid angle 3.6 pi sr, wider than the
+// cosine's 1.5 pi, where the extents rule alone kept the product), where the product was
+// measured not to pay for its pass.
+TEST(GpuSamplerData, ALambertLobeIsPackedEnvMisUnderASunAndUnderASoftMap) {
+    auto spiky = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    spiky->at(40, 30) = glm::vec3(1e4f);
+    auto soft = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 256; ++x)
+            soft->at(x, y) = glm::vec3(1.0f);
+    for (const auto& image : {spiky, soft}) {
+        scene::Environment env;
+        env.image = image;
+        SceneSamplerTables scene;
+        scene.samplerIndexOfMaterial = {0};
+        scene.tables = DirectionSamplerTables::build(
+            env, {{"lambert", plugins::findBrdf("lambert"), {glm::vec3(0.8f), 1.0f}}},
+            SamplerKind::Wavelet);
+        EXPECT_FALSE(scene.tables->anyProduct());
+        auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, 1);
+        ASSERT_TRUE(packed.ok()) << packed.error().message();
+        EXPECT_EQ(packed->materials[0].mode, kGpuSamplerEnvMis);
+        EXPECT_EQ(packed->materials[0].precomputedBins, 0u);
+    }
 }
 
 } // namespace

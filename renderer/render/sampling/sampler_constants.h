@@ -45,10 +45,11 @@ inline constexpr int kWaveletProductVertices = 1;
 // cost, round 3"). The product pays where env and lobe are of comparable extent; it cannot where
 // one is far wider than the other, and the material's vertices then estimate direct env light as
 // `mis` does (ProductMode::EnvMis; both tracers read the policy). Extents: the env's effective
-// solid angle (integral L)^2 / integral L^2, a mirror lobe's 2 pi (1 - cos half-width), the
-// clamped cosine's 1.5 pi (hemisphere-wide lobes about the normal only: not a glossy measured table). Env wider than kEnvMisSolidAngleRatio x the lobe: BSDF sampling follows
-// the env across the lobe. Env narrower than 1/kEnvMisSolidAngleRatio of the lobe: env sampling
-// follows the integrand (the lobe is near constant across the env's light).
+// solid angle (integral L)^2 / integral L^2 and a mirror lobe's 2 pi (1 - cos half-width). Env
+// wider than kEnvMisSolidAngleRatio x the lobe: BSDF sampling follows the env across the lobe.
+// Env narrower than 1/kEnvMisSolidAngleRatio of the lobe: env sampling follows the integrand (the
+// lobe is near constant across the env's light). Hemisphere-wide lobes about the normal are not
+// judged by extents: they are EnvMis under every env ("Equal time, round 5").
 inline constexpr double kEnvMisSolidAngleRatio = 16.0;
 
 // The share rule's moment estimates: the lobe's without a product from kLobeStrata^2 stratified

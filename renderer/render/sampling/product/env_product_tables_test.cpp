@@ -3,6 +3,7 @@
 // product sampler's pdf agreeing with what it draws.
 #include "render/sampling/product/env_product_tables.h"
 
+#include "plugins/brdf_table.h"
 #include "render/sampling/product/env_product_sampler.h"
 #include "render/testing/sampler_test_envs.h"
 #include "render/sampling/sampler_window.h"
@@ -12,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace wavelit::render {
 namespace {
@@ -41,29 +43,48 @@ TEST(EnvProductTables, PolicyFollowsLobeWidth) {
               ProductMode::BsdfLobe);
 }
 
-// The extents rule (kEnvMisSolidAngleRatio): the product only where env and lobe are of
-// comparable extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is left to
-// BSDF sampling (EnvMis), the cosine lobe (1.5 pi sr) keeps its product. A sun holding the
-// light: the cosine lobe is left to env sampling, a mirror lobe keeps its product.
-TEST(EnvProductTables, ProductOnlyWhereEnvAndLobeHaveComparableExtent) {
+// The extents rule (kEnvMisSolidAngleRatio), for mirror lobes: the product only where env and
+// lobe are of comparable extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is
+// left to BSDF sampling (EnvMis). A sun holding the light: the mirror lobe keeps its product.
+TEST(EnvProductTables, MirrorLobeProductOnlyWhereEnvAndLobeHaveComparableExtent) {
     const plugins::Brdf* ggx = plugins::findBrdf("ggx");
-    const plugins::Brdf* lambert = plugins::findBrdf("lambert");
     scene::Environment flat;
     flat.image = std::make_shared<util::ImageRGB>(512, 256, glm::vec3(1.0f)); // texels << the lobe
     const SamplerEnvironment constant = SamplerEnvironment::build(flat);
     EXPECT_NEAR(constant.effectiveSolidAngle(), 4.0 * 3.141592653589793, 1e-9);
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, constant).mode, ProductMode::EnvMis);
-    EXPECT_EQ(chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, constant).mode,
-              ProductMode::Product);
     const SamplerEnvironment sun = sunEnvironment();
     EXPECT_LT(sun.effectiveSolidAngle(), 0.05);
-    EXPECT_EQ(chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, sun).mode, ProductMode::EnvMis);
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, sun).mode, ProductMode::Product);
-    // No tables for an EnvMis material: its vertices draw from none.
-    const MaterialProductTables t =
-        MaterialProductTables::build(sun, chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, sun));
-    EXPECT_EQ(t.factorCount(), 0u);
-    EXPECT_EQ(t.bytes(), 0u);
+}
+
+// A hemisphere-wide lobe about the normal (Lambert) takes `mis`'s technique under every lit env
+// (docs/performance.md "Equal time, round 5": its product did not pay for its pass): under a
+// constant env, where the extents rule alone would have kept the product (4 pi sr vs the
+// cosine's 1.5 pi), and under a sun. No tables are built for it. A glossy lobe about the normal
+// (a measured table) keeps its whole-sphere product.
+TEST(EnvProductTables, HemisphereWideLobesTakeMisTechniqueUnderEveryEnv) {
+    const plugins::Brdf* lambert = plugins::findBrdf("lambert");
+    scene::Environment flat;
+    flat.image = std::make_shared<util::ImageRGB>(512, 256, glm::vec3(1.0f));
+    const SamplerEnvironment constant = SamplerEnvironment::build(flat);
+    const SamplerEnvironment sun = sunEnvironment();
+    for (const SamplerEnvironment* env : {&constant, &sun}) {
+        const ProductPolicy p = chooseProductPolicy(*lambert, {glm::vec3(0.8f), 1.0f}, *env);
+        EXPECT_EQ(p.mode, ProductMode::EnvMis);
+        EXPECT_TRUE(p.aroundNormal);
+        const MaterialProductTables t = MaterialProductTables::build(*env, p);
+        EXPECT_EQ(t.factorCount(), 0u);
+        EXPECT_EQ(t.bytes(), 0u);
+    }
+    auto table = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
+                                       "/brdfs/glossy-copper-r05.binary");
+    ASSERT_TRUE(table.ok()) << table.error().message();
+    const ProductPolicy measured = chooseProductPolicy(
+        *plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}, constant);
+    EXPECT_EQ(measured.mode, ProductMode::Product);
+    EXPECT_TRUE(measured.aroundNormal);
+    EXPECT_LT(measured.lobeHalfWidth, 0.5 * 3.141592653589793);
 }
 
 TEST(SamplerWindow, ContainsItsCapAndAlignsWithTheQuadtree) {
