@@ -73,8 +73,11 @@ layout(std430, binding = 6) readonly buffer Lights { Light64 analyticLights64[];
 #ifdef WAVELIT_DIRECTION_SAMPLERS
 #include "sampling/sampler_structs.glsl"
 layout(std430, binding = 7) readonly buffer EnvTable { EnvNode envNodes[]; };
+layout(std430, binding = 7) readonly buffer EnvTable64 { u64vec2 envNodes64[]; }; // the same nodes
 layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };
+// The same buffer as 64-bit words: doubles and aligned word pairs in one load (env_exact.glsl).
+layout(std430, binding = 9) readonly buffer SamplerWords64 { uint64_t samplerWords64[]; };
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
 // `wavelet` with a product: the camera vertex's mixture per pixel (sampling/product_cache.glsl).
 layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache { uint productCache[]; };

@@ -19,7 +19,8 @@
 //
 // The including shader includes sampling/sampler_structs.glsl and declares, before this file:
 //   buffer { EnvNode envNodes[]; };  buffer { SamplerMaterial samplerMaterials[]; };
-//   buffer { uint samplerWords[]; };
+//   buffer { uint samplerWords[]; };  buffer { uint64_t samplerWords64[]; } (the same buffer, at the
+//   same binding: env_exact.glsl reads its 8-byte aligned doubles through it)
 // samplerWords holds each material's flat product tables (MaterialProductTables::flatten(), its
 // three arrays at the three offsets) and the env's tail cell averages (float bits).
 //
@@ -124,11 +125,14 @@ float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int
         vec2 q = octToSquare(axisLocal);
         int bx = min(int(q.x * float(bins)), bins - 1), by = min(int(q.y * float(bins)), bins - 1);
         s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
-        uint at = sm.precomputedOffset +
-                  uint((by * bins + bx) * (WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS + pyramidOffset(s.m + 1)));
+        // Bins of an even stride (header, pyramid, one pad word) from an odd precomputedOffset
+        // (precomputedBinWords): (ox, oy) and the pyramid's sibling pairs are 8-byte aligned.
+        int binWords = (WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS + pyramidOffset(s.m + 1) + 1) & ~1;
+        uint at = sm.precomputedOffset + uint((by * bins + bx) * binWords);
         s.k = int(samplerWords[at]);
-        s.ox = int(samplerWords[at + 1u]);
-        s.oy = int(samplerWords[at + 2u]);
+        ivec2 oxy = ivec2(unpackUint2x32(samplerWords64[(at + 1u) >> 1u]));
+        s.ox = oxy.x;
+        s.oy = oxy.y;
         s.massOffset = int(at) + WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS;
         s.refineLevels = dsRefineLevels(sm, s.k + s.m, envLevel);
         return dsMass(s, 0);

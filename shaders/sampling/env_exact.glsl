@@ -7,16 +7,22 @@
 // (gpu_sampler_data.h): width, height, each row's texel solid angle (height doubles, two words
 // each: low, high), the rows' CDF (height + 1 doubles) and guide (height words), the rows' column
 // CDFs (height x (width + 1) doubles) and guides (height x width words), then the texels' pdfs
-// (height x width doubles, row-major).
+// (height x width doubles, row-major). Each guide is padded to an even word count and `offset` is
+// even (gpu_sampler_data.h GpuEnvExactLayout), so every double and the (width, height) pair sit on
+// 8-byte boundaries and are read through samplerWords64, the u64 view of the same buffer: one
+// load a lane instead of two on lavapipe (docs/performance.md "Lavapipe throughput (issue 12)").
 #ifndef WAVELIT_ENV_EXACT_GLSL
 #define WAVELIT_ENV_EXACT_GLSL
 
 #include "common/constants.glsl"
 #include "common/equirect.glsl"
 
-double envExactWord(uint i) { return packDouble2x32(uvec2(samplerWords[i], samplerWords[i + 1u])); }
+// The double at (even) word i.
+double envExactWord(uint i) { return uint64BitsToDouble(samplerWords64[i >> 1u]); }
 
-uvec2 envExactSize(uint offset) { return uvec2(samplerWords[offset], samplerWords[offset + 1u]); }
+uvec2 envExactSize(uint offset) { return unpackUint2x32(samplerWords64[offset >> 1u]); }
+
+uint envEvenUp(uint n) { return (n + 1u) & ~1u; }
 
 // In [lo, hi]: the first entry i of the CDF at word `cdf` with cdf[i + 1] > u.
 uint envCdfFirstEndingAfter(uint cdf, uint lo, uint hi, double u) {
@@ -50,8 +56,8 @@ uint envCdfPick(uint cdf, uint guide, uint n, inout double u) {
 
 double envExactTexelPdf(uint offset, uvec2 t) {
     uvec2 size = envExactSize(offset);
-    uint pdfs = offset + 2u + 2u * size.y + 2u * (size.y + 1u) + size.y + 2u * size.y * (size.x + 1u) +
-                size.y * size.x;
+    uint pdfs = offset + 2u + 2u * size.y + 2u * (size.y + 1u) + envEvenUp(size.y) +
+                2u * size.y * (size.x + 1u) + envEvenUp(size.y * size.x);
     return envExactWord(pdfs + 2u * (t.y * size.x + t.x));
 }
 
@@ -69,7 +75,7 @@ double envExactPdf(uint offset, vec3 wi, vec2 cosSinYaw) {
 vec3 envExactSample(uint offset, dvec2 u) {
     uvec2 size = envExactSize(offset);
     uint omega = offset + 2u, rowCdf = omega + 2u * size.y, rowGuide = rowCdf + 2u * (size.y + 1u);
-    uint columnCdf = rowGuide + size.y, columnGuide = columnCdf + 2u * size.y * (size.x + 1u);
+    uint columnCdf = rowGuide + envEvenUp(size.y), columnGuide = columnCdf + 2u * size.y * (size.x + 1u);
     uint y = envCdfPick(rowCdf, rowGuide, size.y, u.y);
     uint x = envCdfPick(columnCdf + 2u * y * (size.x + 1u), columnGuide + y * size.x, size.x, u.x);
     float c0 = cos(kPi * float(y) / float(size.y));

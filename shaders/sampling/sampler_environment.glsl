@@ -2,7 +2,9 @@
 // and its sampling quadtree, the twin of wavelet::HierarchicalSampler's descent over its float
 // tables (renderer/wavelet/hierarchical_sampler.cpp; 16 bytes per node, see TableNode there).
 // The including shader declares (EnvNode: sampling/sampler_structs.glsl)
-//     buffer ... { EnvNode envNodes[]; };
+//     buffer ... { EnvNode envNodes[]; };  buffer ... { u64vec2 envNodes64[]; };
+// (the same buffer at the same binding: a whole node in two 64-bit loads instead of four 32-bit
+// ones on lavapipe, docs/performance.md "Lavapipe throughput (issue 12)").
 // Points and the numbers u are DOUBLE: a descent through 10+ levels rescales u by each choice's
 // probability (a sun's texel takes 1e-6 of a split), and float would run out of digits, so the
 // point drawn would no longer follow the tabulated pdf. Densities are per unit area of the
@@ -62,6 +64,13 @@ double powerOfFour(int l) {
     return side * side;
 }
 
+// Node i read through the u64 view: (py0, px0y0), (px0y1, firstChild), low word first.
+EnvNode envNodeAt(int i) {
+    u64vec2 q = envNodes64[i];
+    uvec2 a = unpackUint2x32(q.x), b = unpackUint2x32(q.y);
+    return EnvNode(uintBitsToFloat(a.x), uintBitsToFloat(a.y), uintBitsToFloat(b.x), int(b.y));
+}
+
 // The node of cell (l, x, y), or of its deepest ancestor where the tree is constant above it;
 // `reached` is that node's level.
 int envFindNode(int l, int x, int y, out int reached) {
@@ -83,8 +92,7 @@ double envDescendFrom(bool drawing, inout dvec2 u, dvec2 p, inout int l, inout i
                       int node, int reached) {
     double probability = 1.0LF;
     if (reached < l) return probability;
-    while (envNodes[node].firstChild >= 0) {
-        EnvNode n = envNodes[node];
+    for (EnvNode n = envNodeAt(node); n.firstChild >= 0; n = envNodeAt(node)) {
         double p0, p1;
         decodeSplit(n.py0, p0, p1);
         int cy = takeShare(drawing, p0, p1, childHolding(drawing, p.y, l, y), u.y, probability);
@@ -129,8 +137,8 @@ double envPdfWithin(int l, int x, int y, dvec2 p) {
 // 2 = (0,1), 3 = (1,1)); false, and 1/4 each, for a leaf of the tree.
 bool envChildShares(int node, out double w[4]) {
     w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
-    if (envNodes[node].firstChild < 0) return false;
-    EnvNode n = envNodes[node];
+    EnvNode n = envNodeAt(node);
+    if (n.firstChild < 0) return false;
     double py0, py1, pl0, pr0, pl1, pr1;
     decodeSplit(n.py0, py0, py1);
     decodeSplit(n.px0y0, pl0, pr0);
@@ -148,10 +156,11 @@ double envCellMass(int l, int x, int y, out int node, out bool exact) {
     node = 0;
     int reached = 0;
     double mass = 1.0LF;
-    while (reached < l && envNodes[node].firstChild >= 0) {
+    while (reached < l) {
+        EnvNode n = envNodeAt(node);
+        if (n.firstChild < 0) break;
         int shift = l - reached - 1;
         int cx = (x >> shift) & 1, cy = (y >> shift) & 1;
-        EnvNode n = envNodes[node];
         double py0, py1, px0, px1;
         decodeSplit(n.py0, py0, py1);
         decodeSplit(cy == 0 ? n.px0y0 : n.px0y1, px0, px1);

@@ -46,7 +46,27 @@ GpuSamplerMaterial oracleMaterial(const SamplerMaterial& m) {
     return g;
 }
 
+// One zero word when `words` has an odd count: what follows starts on an 8-byte boundary, so the
+// shaders read its doubles and word pairs through samplerWords' u64 view (one load, not two:
+// docs/performance.md "Lavapipe throughput (issue 12)").
+void padToEven(std::vector<uint32_t>& words) {
+    if (words.size() % 2 != 0)
+        words.push_back(0);
+}
+
 } // namespace
+
+GpuEnvExactLayout gpuEnvExactLayout(uint32_t offset, uint32_t width, uint32_t height) {
+    GpuEnvExactLayout l;
+    l.rowSolidAngle = offset + 2;
+    l.rowCdf = l.rowSolidAngle + 2 * height;
+    l.rowGuide = l.rowCdf + 2 * (height + 1);
+    l.columnCdf = l.rowGuide + evenUp(height);
+    l.columnGuide = l.columnCdf + 2 * height * (width + 1);
+    l.pdfs = l.columnGuide + evenUp(height * width);
+    l.end = l.pdfs + 2 * height * width;
+    return l;
+}
 
 util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, SamplerKind kind,
                                              size_t gpuMaterialCount) {
@@ -110,11 +130,14 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                 const int m = std::min(policy.productLevel, kGpuMaxProductLevel);
                 const std::vector<uint32_t> bins =
                     buildPrecomputedProducts(env, t.material(size_t(index)), m, *product);
+                if (d.words.size() % 2 == 0)
+                    d.words.push_back(0); // odd: the pyramids' sibling pairs 8-byte aligned
                 g.precomputedOffset = uint32_t(d.words.size());
                 g.precomputedBins = 1u << axisBinLevel(*product);
                 d.words.insert(d.words.end(), bins.begin(), bins.end());
             }
         }
+        padToEven(d.words); // the exact tables after the (even count of) tail words: 8-byte aligned
         d.tailOffset = uint32_t(d.words.size());
         const int side = 1 << kTailLevel;
         for (int y = 0; y < side; ++y)
@@ -135,12 +158,15 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         pushDoubles(exact.rowSolidAngle());
         pushDoubles(exact.rowCdf());
         d.words.insert(d.words.end(), exact.rowGuide().begin(), exact.rowGuide().end());
+        padToEven(d.words);
         pushDoubles(exact.columnCdf());
         d.words.insert(d.words.end(), exact.columnGuide().begin(), exact.columnGuide().end());
+        padToEven(d.words);
         pushDoubles(exact.pdfTable());
     }
     if (d.words.empty())
         d.words.push_back(0);
+    padToEven(d.words); // the shaders' u64 view covers every word
     return d;
 }
 

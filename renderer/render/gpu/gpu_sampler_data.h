@@ -10,7 +10,11 @@
 //              angles (doubles as two words, low first), the rows' guided CDF (height + 1
 //              doubles, then height guide words) and each row's over its columns (height x
 //              (width + 1) doubles, then height x width guide words), texel pdfs (doubles);
-//              sampling/env_exact.glsl, render/sampling/guided_cdf.h)
+//              sampling/env_exact.glsl, render/sampling/guided_cdf.h; word offsets in
+//              GpuEnvExactLayout). Every double sits on an 8-byte boundary (tailOffset is even,
+//              each guide is padded to an even word count, the buffer to an even length): the
+//              shaders read doubles and word pairs through a u64 view of the buffer, one load for
+//              two words on lavapipe (docs/performance.md "Lavapipe throughput (issue 12)").
 //              A `wavelet` material in product mode also has its axis bins' precomputed product
 //              pyramids there (precomputed_products.h), after its flat tables.
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).
@@ -85,6 +89,15 @@ struct GpuSamplerData {
     std::vector<uint32_t> words;                                   // never empty
     size_t bytes() const;
 };
+
+// Word offsets in `words` of the exact env technique's tables at `offset` (tailOffset +
+// 4^kTailLevel) for a width x height map; env_exact.glsl computes the same. All even when
+// `offset` is.
+struct GpuEnvExactLayout {
+    uint32_t rowSolidAngle, rowCdf, rowGuide, columnCdf, columnGuide, pdfs, end;
+};
+constexpr uint32_t evenUp(uint32_t n) { return (n + 1) & ~1u; }
+GpuEnvExactLayout gpuEnvExactLayout(uint32_t offset, uint32_t width, uint32_t height);
 
 // `tables` from SamplerTablesCache::update; gpuMaterialCount = scene materials + 1 (the
 // default). Errors (Unsupported): a product level below 1.

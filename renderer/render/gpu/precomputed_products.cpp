@@ -99,6 +99,10 @@ double binTailMoment(const SamplerEnvironment& env, const SamplerMaterial& mater
     return sum * fourPi * cellSolidAngle;
 }
 
+int precomputedBinWords(int m) {
+    return (kPrecomputedBinHeaderWords + precomputedPyramidFloats(m) + 1) & ~1;
+}
+
 int axisBinLevel(const MaterialProductTables& tables) {
     return std::max(kAxisBinLevel, tables.policy().binLevel);
 }
@@ -125,6 +129,8 @@ std::vector<uint32_t> buildPrecomputedProducts(const SamplerEnvironment& env,
         out.push_back(std::bit_cast<uint32_t>(float(binTailMoment(env, material, bin))));
         for (float v : buildBinPyramid(env, material, m, bin))
             out.push_back(std::bit_cast<uint32_t>(v));
+        if (out.size() % 2 != 0)
+            out.push_back(0); // an even stride: every bin's pyramid at the same word parity
     }
     return out;
 }

@@ -40,6 +40,12 @@ namespace wavelit::render {
 inline constexpr int kAxisBinLevel = 5;
 // Words per bin before its pyramid: the window's k, ox, oy and the tail moment (binTailMoment).
 inline constexpr int kPrecomputedBinHeaderWords = 4;
+// buildPrecomputedProducts' bins: the header, the pyramid (an odd count of floats), one zero word,
+// so a bin's stride is even. gpu_sampler_data.cpp puts the first bin at an odd word, so every
+// pyramid starts at an odd word and each pair of sibling cells (levels >= 1 start at the odd
+// (4^l - 1) / 3) on an 8-byte boundary: the shader reads a pair in one u64 load
+// (dsChildProbabilities; docs/performance.md "Lavapipe throughput (issue 12)").
+int precomputedBinWords(int m);
 
 struct AxisBin {
     glm::dvec3 axis{0.0, 0.0, 1.0}; // env-local unit vector: the bin's centre

@@ -37,8 +37,10 @@ std::string kernelSource(SamplerKind kind) {
 layout(local_size_x = 64) in;
 #include "sampling/sampler_structs.glsl"
 layout(std430, binding = 0) readonly buffer EnvTable { EnvNode envNodes[]; };
+layout(std430, binding = 0) readonly buffer EnvTable64 { u64vec2 envNodes64[]; };
 layout(std430, binding = 1) readonly buffer SamplerMaterials { SamplerMaterial samplerMaterials[]; };
 layout(std430, binding = 2) readonly buffer SamplerWords { uint samplerWords[]; };
+layout(std430, binding = 2) readonly buffer SamplerWords64 { uint64_t samplerWords64[]; };
 layout(std430, binding = 3) readonly buffer In { vec4 inputs[]; };
 layout(std430, binding = 4) buffer Samples { vec4 samples[]; };
 layout(std430, binding = 5) buffer Info { float info[]; };

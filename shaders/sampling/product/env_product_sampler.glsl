@@ -154,7 +154,22 @@ void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
                           out double pColumn[4]) {
     int side = 1 << (l + 1), off = pyramidOffset(l + 1);
     int c0 = off + 2 * y * side + 2 * x, c1 = c0 + side;
-    double a = dsMass(s, c0), b = dsMass(s, c0 + 1), c = dsMass(s, c1), d = dsMass(s, c1 + 1);
+    double a, b, c, d;
+    if (s.massOffset >= 0) {
+        // A precomputed pyramid: siblings c0, c0 + 1 (and c1, c1 + 1) share an 8-byte aligned
+        // u64 (precomputed_products.h precomputedBinWords): one load each pair, not two.
+        vec2 ab = uintBitsToFloat(unpackUint2x32(samplerWords64[uint(s.massOffset + c0) >> 1u]));
+        vec2 cd = uintBitsToFloat(unpackUint2x32(samplerWords64[uint(s.massOffset + c1) >> 1u]));
+        a = ab.x;
+        b = ab.y;
+        c = cd.x;
+        d = cd.y;
+    } else {
+        a = dsMass(s, c0);
+        b = dsMass(s, c0 + 1);
+        c = dsMass(s, c1);
+        d = dsMass(s, c1 + 1);
+    }
     dsParts(a + b, c + d, pRow[0], pRow[1]);
     dsParts(a, b, pColumn[0], pColumn[1]);
     dsParts(c, d, pColumn[2], pColumn[3]);
