@@ -108,8 +108,9 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.refineCellAngle = kRefineCellPerLobe * p.lobeHalfWidth;
         p.refineMaxLevels = kRefineMaxLevels;
         std::snprintf(why, sizeof why,
-                      "glossy lobe about the normal (half-width %.4f rad): env x BRDF x cos around "
-                      "the normal over the whole sphere, 32^2, refined by the env pyramid",
+                      "lobe about the normal narrower than the hemisphere (half-width %.4f rad): "
+                      "env x BRDF x cos around the normal over the whole sphere, 32^2, refined by "
+                      "the env pyramid",
                       halfWidth);
         p.reason = why;
         return p;
