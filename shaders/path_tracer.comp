@@ -81,6 +81,9 @@ layout(std430, binding = 9) readonly buffer SamplerWords64 { uint64_t samplerWor
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
 // `wavelet` with a product: the camera vertex's mixture per pixel (sampling/product_cache.glsl).
 layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache { uint productCache[]; };
+// The same buffer as 64-bit words: the entries are read and written through this view alone (two
+// words a load; product_cache.glsl), the 32-bit one only reads the pixels' offsets.
+layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache64 { uint64_t productCache64[]; };
 #endif
 #include "sampling/direction_sampler.glsl"
 #endif
@@ -228,8 +231,10 @@ void main() {
 #ifdef WAVELIT_DIRECTION_SAMPLERS
             // mis: one texel lookup gives both the radiance and the env technique's pdf.
             if (neeOfDir && misNeeOfDir) {
-                uvec2 t = envExactTexel(ds.exactOffset, dir, ds.cosSinYaw);
-                w = powerHeuristic(scatterPdfOfDir, float(envExactTexelPdf(ds.exactOffset, t)));
+                uvec2 exactSize = envExactSize(ds.exactOffset);
+                uvec2 t = equirectTexelOf(dir, ds.cosSinYaw, exactSize);
+                w = powerHeuristic(scatterPdfOfDir,
+                                   float(envExactTexelPdfSized(ds.exactOffset, exactSize, t)));
                 vec3 escaped = beta * (w * envTexelRadiance(t));
                 L += escaped;
 #ifdef WAVELIT_LIGHT_GROUPS

@@ -20,7 +20,8 @@
 // The including shader includes sampling/sampler_structs.glsl and declares, before this file:
 //   buffer { EnvNode envNodes[]; };  buffer { SamplerMaterial samplerMaterials[]; };
 //   buffer { uint samplerWords[]; };  buffer { uint64_t samplerWords64[]; } (the same buffer, at the
-//   same binding: env_exact.glsl reads its 8-byte aligned doubles through it)
+//   same binding: env_exact.glsl reads its 8-byte aligned doubles through it, the product tables
+//   their word pairs)
 // samplerWords holds each material's flat product tables (MaterialProductTables::flatten(), its
 // three arrays at the three offsets) and the env's tail cell averages (float bits).
 //

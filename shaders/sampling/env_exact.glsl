@@ -54,11 +54,18 @@ uint envCdfPick(uint cdf, uint guide, uint n, inout double u) {
     return lo;
 }
 
-double envExactTexelPdf(uint offset, uvec2 t) {
-    uvec2 size = envExactSize(offset);
+// The *Sized functions take the tables' (width, height), envExactSize(offset), from a caller that
+// has read it already: a pdf, a texel lookup and a draw at one vertex read it once, not three
+// times (a buffer load on lavapipe is not shared between calls: the kernel writes other buffers,
+// so Mesa does not merge loads from this one).
+double envExactTexelPdfSized(uint offset, uvec2 size, uvec2 t) {
     uint pdfs = offset + 2u + 2u * size.y + 2u * (size.y + 1u) + envEvenUp(size.y) +
                 2u * size.y * (size.x + 1u) + envEvenUp(size.y * size.x);
     return envExactWord(pdfs + 2u * (t.y * size.x + t.x));
+}
+
+double envExactTexelPdf(uint offset, uvec2 t) {
+    return envExactTexelPdfSized(offset, envExactSize(offset), t);
 }
 
 // The texel world direction wi looks up (the radiance's texel too: the tables cover the map).
@@ -68,12 +75,12 @@ uvec2 envExactTexel(uint offset, vec3 wi, vec2 cosSinYaw) {
 
 // Solid-angle pdf at world direction wi.
 double envExactPdf(uint offset, vec3 wi, vec2 cosSinYaw) {
-    return envExactTexelPdf(offset, envExactTexel(offset, wi, cosSinYaw));
+    uvec2 size = envExactSize(offset);
+    return envExactTexelPdfSized(offset, size, equirectTexelOf(wi, cosSinYaw, size));
 }
 
 // An env-local direction.
-vec3 envExactSample(uint offset, dvec2 u) {
-    uvec2 size = envExactSize(offset);
+vec3 envExactSampleSized(uint offset, uvec2 size, dvec2 u) {
     uint omega = offset + 2u, rowCdf = omega + 2u * size.y, rowGuide = rowCdf + 2u * (size.y + 1u);
     uint columnCdf = rowGuide + envEvenUp(size.y), columnGuide = columnCdf + 2u * size.y * (size.x + 1u);
     uint y = envCdfPick(rowCdf, rowGuide, size.y, u.y);
@@ -85,5 +92,7 @@ vec3 envExactSample(uint offset, dvec2 u) {
     float phi = 2.0 * kPi * (float((double(x) + u.x) / double(size.x)) - 0.5);
     return vec3(sinTheta * cos(phi), cosTheta, sinTheta * sin(phi));
 }
+
+vec3 envExactSample(uint offset, dvec2 u) { return envExactSampleSized(offset, envExactSize(offset), u); }
 
 #endif

@@ -35,10 +35,12 @@ vec3 envNextEvent(DirSampler ds, bool envTechniqueOnly, bool roulette, vec3 beta
     uvec2 texel = uvec2(0u);
     if (envTechniqueOnly) {
         // dsSample's exact-env branch with cEnv = 1, the pdf read once at the radiance's texel.
-        vec3 local = envExactSample(ds.exactOffset, dvec2(u1, u2));
+        // The tables' size read once for the draw, the texel and its pdf.
+        uvec2 size = envExactSize(ds.exactOffset);
+        vec3 local = envExactSampleSized(ds.exactOffset, size, dvec2(u1, u2));
         wiWorld = normalize(envToWorld(ds.cosSinYaw, local));
-        texel = envExactTexel(ds.exactOffset, wiWorld, ds.cosSinYaw);
-        pdf = float(envExactTexelPdf(ds.exactOffset, texel));
+        texel = equirectTexelOf(wiWorld, ds.cosSinYaw, size);
+        pdf = float(envExactTexelPdfSized(ds.exactOffset, size, texel));
         if (!(pdf > 0.0) || isinf(pdf) || isnan(wiWorld.x)) return vec3(0.0);
     } else if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) {
         return vec3(0.0);

@@ -14,9 +14,10 @@
 // env alone: silhouettes, where the centre hit another object or nothing).
 //
 // Buffer (uint words): [0, pixels) the word offset of each pixel's entry (kNoCacheEntry: none,
-// its centre hit no such material on the CPU's trace), then the entries: a header of
-// WAVELIT_PRODUCT_CACHE_HEADER_WORDS words (material, shares, window, frame, wo) and, for a per-hit
-// product (no precomputed bin), its pyramid's pyramidOffset(m + 1) masses.
+// its centre hit no such material on the CPU's trace), padded to an even count, then the entries:
+// a header of WAVELIT_PRODUCT_CACHE_HEADER_WORDS words (material, shares, window, normal, wo) and,
+// for a per-hit product (no precomputed bin), a pad word and its pyramid's pyramidOffset(m + 1)
+// masses.
 #ifndef WAVELIT_PRODUCT_CACHE_GLSL
 #define WAVELIT_PRODUCT_CACHE_GLSL
 
@@ -24,21 +25,25 @@ const uint kNoCacheEntry = 0xFFFFFFFFu;
 
 bool pcCacheableMode(uint mode) { return mode == kModeProduct || mode == kModeBsdfLobe; }
 
-void pcWriteVec3(uint at, vec3 v) {
-    productCache[at] = floatBitsToUint(v.x);
-    productCache[at + 1u] = floatBitsToUint(v.y);
-    productCache[at + 2u] = floatBitsToUint(v.z);
-}
-vec3 pcReadVec3(uint at) {
-    return vec3(uintBitsToFloat(productCache[at]), uintBitsToFloat(productCache[at + 1u]),
-                uintBitsToFloat(productCache[at + 2u]));
-}
+// An entry is read and written through the buffer's u64 view, productCache64 (two words a load
+// on lavapipe; render/gpu/product_cache.h keeps every entry on an 8-byte boundary). Its header,
+// as u64 pairs (low word first), h = at / 2:
+//   h + 0 (material, massOffset)   h + 1 (cProduct, cBsdf)   h + 2 (cEnv, k)   h + 3 (ox, oy)
+//   h + 4 (m, refineLevels)        h + 5 (n.x, n.y)          h + 6 (n.z, wo.x) h + 7 (wo.y, wo.z)
+// The frame is stored as its normal: the tangents are frameFromNormal's of it, as pcBuild made
+// them (8 loads a camera vertex instead of 22 word loads). A per-hit pyramid starts at the odd
+// word at + WAVELIT_PRODUCT_CACHE_PYRAMID_AT, after one pad word, so its sibling cells pair up
+// in u64s (dsChildProbabilities).
+uint64_t pcPair(uint a, uint b) { return packUint2x32(uvec2(a, b)); }
+uint64_t pcPair(float a, float b) { return packUint2x32(floatBitsToUint(vec2(a, b))); }
+uint64_t pcPair(float a, uint b) { return packUint2x32(uvec2(floatBitsToUint(a), b)); }
 
 // Builds the entry at `at` from the pixel centre's camera hit: the same surface, frame and
 // dsSetup as the path loop's camera vertex.
 void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCount,
              uint materialCount) {
-    productCache[at] = kNoCacheEntry;
+    uint h = at >> 1u;
+    productCache64[h] = pcPair(kNoCacheEntry, 0u);
     uint tri;
     float t, b1, b2;
     if (!bvhTrace(origin, dir, 0.0, kFloatMax, false, triangleCount, tri, t, b1, b2)) return;
@@ -60,27 +65,24 @@ void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCoun
     DirSampler s = dsSetup(g, sm, frame, wo, uint(mat.emissionType.a), mat.baseColorRoughness.rgb,
                            mat.baseColorRoughness.a);
     int massOffset = s.massOffset;
-    uint pyramid = at + uint(WAVELIT_PRODUCT_CACHE_HEADER_WORDS);
     if (massOffset < 0 && s.cProduct > 0.0) {
-        // The private pyramid follows the header; its entry reads it there (dsMass).
-        for (int i = 0; i < pyramidOffset(s.m + 1); ++i)
-            productCache[pyramid + uint(i)] = floatBitsToUint(gMass[i]);
+        // The private pyramid follows the header; its entry reads it there (dsMass). Cell 0
+        // shares a u64 with the pad word, then cells (2i - 1, 2i) one u64 each (the count is odd).
+        uint pyramid = at + uint(WAVELIT_PRODUCT_CACHE_PYRAMID_AT);
+        uint p = pyramid >> 1u;
+        productCache64[p] = pcPair(0u, floatBitsToUint(gMass[0]));
+        for (int i = 1; i < pyramidOffset(s.m + 1); i += 2)
+            productCache64[p + uint(i + 1) / 2u] = pcPair(gMass[i], gMass[i + 1]);
         massOffset = kMassInProductCache - int(pyramid);
     }
-    productCache[at] = m;
-    productCache[at + 1u] = floatBitsToUint(s.cProduct);
-    productCache[at + 2u] = floatBitsToUint(s.cBsdf);
-    productCache[at + 3u] = floatBitsToUint(s.cEnv);
-    productCache[at + 4u] = uint(s.k);
-    productCache[at + 5u] = uint(s.ox);
-    productCache[at + 6u] = uint(s.oy);
-    productCache[at + 7u] = uint(s.m);
-    productCache[at + 8u] = uint(s.refineLevels);
-    productCache[at + 9u] = uint(massOffset);
-    pcWriteVec3(at + 10u, frame.t);
-    pcWriteVec3(at + 13u, frame.b);
-    pcWriteVec3(at + 16u, frame.n);
-    pcWriteVec3(at + 19u, wo);
+    productCache64[h] = pcPair(m, uint(massOffset));
+    productCache64[h + 1u] = pcPair(s.cProduct, s.cBsdf);
+    productCache64[h + 2u] = pcPair(s.cEnv, uint(s.k));
+    productCache64[h + 3u] = pcPair(uint(s.ox), uint(s.oy));
+    productCache64[h + 4u] = pcPair(uint(s.m), uint(s.refineLevels));
+    productCache64[h + 5u] = pcPair(frame.n.x, frame.n.y);
+    productCache64[h + 6u] = pcPair(frame.n.z, wo.x);
+    productCache64[h + 7u] = pcPair(wo.y, wo.z);
 }
 
 // The camera vertex's NEE mixture of material m (cacheable mode) from the pixel's entry at `at`;
@@ -88,22 +90,30 @@ void pcBuild(uint at, vec3 origin, vec3 dir, SamplerGlobals g, uint triangleCoun
 // technique, the env alone).
 bool pcLoad(uint at, uint m, SamplerGlobals g, uint brdfType, vec3 baseColor, float roughness,
             out DirSampler s) {
-    if (at == kNoCacheEntry || productCache[at] != m) return false;
-    s.cProduct = uintBitsToFloat(productCache[at + 1u]);
-    s.cBsdf = uintBitsToFloat(productCache[at + 2u]);
-    s.cEnv = uintBitsToFloat(productCache[at + 3u]);
+    if (at == kNoCacheEntry) return false;
+    uint h = at >> 1u;
+    uvec2 w = unpackUint2x32(productCache64[h]);
+    if (w.x != m) return false;
+    s.massOffset = int(w.y);
+    w = unpackUint2x32(productCache64[h + 1u]);
+    s.cProduct = uintBitsToFloat(w.x);
+    s.cBsdf = uintBitsToFloat(w.y);
+    w = unpackUint2x32(productCache64[h + 2u]);
+    s.cEnv = uintBitsToFloat(w.x);
+    s.k = int(w.y);
     s.cUniform = 0.0;
     s.cCosine = 0.0;
-    s.k = int(productCache[at + 4u]);
-    s.ox = int(productCache[at + 5u]);
-    s.oy = int(productCache[at + 6u]);
-    s.m = int(productCache[at + 7u]);
-    s.refineLevels = int(productCache[at + 8u]);
-    s.massOffset = int(productCache[at + 9u]);
-    s.frame.t = pcReadVec3(at + 10u);
-    s.frame.b = pcReadVec3(at + 13u);
-    s.frame.n = pcReadVec3(at + 16u);
-    s.wo = pcReadVec3(at + 19u);
+    w = unpackUint2x32(productCache64[h + 3u]);
+    s.ox = int(w.x);
+    s.oy = int(w.y);
+    w = unpackUint2x32(productCache64[h + 4u]);
+    s.m = int(w.x);
+    s.refineLevels = int(w.y);
+    vec2 nxy = uintBitsToFloat(unpackUint2x32(productCache64[h + 5u]));
+    vec2 nzwox = uintBitsToFloat(unpackUint2x32(productCache64[h + 6u]));
+    vec2 woyz = uintBitsToFloat(unpackUint2x32(productCache64[h + 7u]));
+    s.frame = frameFromNormal(vec3(nxy, nzwox.x));
+    s.wo = vec3(nzwox.y, woyz);
     s.brdfType = brdfType;
     s.baseColor = baseColor;
     s.roughness = roughness;

@@ -134,11 +134,12 @@ double envPdfWithin(int l, int x, int y, dvec2 p) {
 }
 
 // The probabilities of a node's four children (in (x, y) order: 0 = (0,0), 1 = (1,0),
-// 2 = (0,1), 3 = (1,1)); false, and 1/4 each, for a leaf of the tree.
-bool envChildShares(int node, out double w[4]) {
+// 2 = (0,1), 3 = (1,1)), 1/4 each for a leaf of the tree; returns the node's firstChild (< 0: a
+// leaf), read with the splits (a caller stepping down needs no second read).
+int envChildSharesAndFirst(int node, out double w[4]) {
     w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
     EnvNode n = envNodeAt(node);
-    if (n.firstChild < 0) return false;
+    if (n.firstChild < 0) return n.firstChild;
     double py0, py1, pl0, pr0, pl1, pr1;
     decodeSplit(n.py0, py0, py1);
     decodeSplit(n.px0y0, pl0, pr0);
@@ -147,8 +148,11 @@ bool envChildShares(int node, out double w[4]) {
     w[1] = py0 * pr0;
     w[2] = py1 * pl1;
     w[3] = py1 * pr1;
-    return true;
+    return n.firstChild;
 }
+
+// envChildSharesAndFirst's shares; false for a leaf of the tree.
+bool envChildShares(int node, out double w[4]) { return envChildSharesAndFirst(node, w) >= 0; }
 
 // The env's share of its total luminance in cell (l, x, y), by its quadtree's splits (uniform
 // below the tree's leaves); `node` is the cell's node when `exact`, else a leaf above the cell.

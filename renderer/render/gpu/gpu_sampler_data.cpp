@@ -3,6 +3,7 @@
 #include "render/gpu/precomputed_products.h"
 
 #include "render/sampling/oracle_sampler.h"
+#include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_constants.h"
 
 #include <algorithm>
@@ -116,8 +117,19 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
                                            " (the GPU needs at least 1)");
             const FlatProductTables flat = product->flatten();
             g.mode = kGpuSamplerProduct;
+            // The header at an odd word: its bins' and factors' word pairs after the 5 header
+            // words, and the nodes after the (odd count of) header words, start on 8-byte
+            // boundaries, so env_product_tables.glsl reads a bin in two u64 loads, a factor in
+            // one, and a node (10 words, an even stride) in four: its first detail alone, then
+            // (detail 2, detail 3) and its children in pairs.
+            static_assert(flat_layout::kHeaderWords % 2 == 1 && flat_layout::kBinWords % 2 == 0 &&
+                          flat_layout::kFactorWords % 2 == 0 && flat_layout::kNodeWords % 2 == 0 &&
+                          flat_layout::kNodeDetail % 2 == 1 && flat_layout::kNodeChild % 2 == 0);
+            if (d.words.size() % 2 == 0)
+                d.words.push_back(0);
             g.tableOffset = uint32_t(d.words.size());
             d.words.insert(d.words.end(), flat.header.begin(), flat.header.end());
+            padToEven(d.words); // a no-op: the header's word count is odd
             g.nodeOffset = uint32_t(d.words.size());
             d.words.insert(d.words.end(), flat.nodeWords.begin(), flat.nodeWords.end());
             g.scalingOffset = uint32_t(d.words.size());

@@ -1,12 +1,16 @@
 // The exact env technique's tables in samplerWords (gpu_sampler_data.h): every double on an 8-byte
 // boundary, so env_exact.glsl can read it through the buffer's u64 view, and each table where
 // GpuEnvExactLayout (and the shader's same arithmetic) says, holding the CPU sampler's values.
-// A 7 x 5 map: odd height and odd texel count, so both guides need their padding word. (The
+// A 7 x 5 map: odd height and odd texel count, so both guides need their padding word. The flat
+// product tables likewise: each material's header at an odd word, so its bin and factor word pairs
+// and its nodes' (detail 2, detail 3) and child pairs are on 8-byte boundaries for the u64 reads of
+// env_product_tables.glsl, holding flatten()'s words. (The
 // precomputed pyramids' alignment has no test: since round 5 of the EnvMis policy no material
 // reaches them; docs/performance.md "Equal time, round 5".)
 #include "render/gpu/gpu_sampler_data.h"
 
 #include "plugins/brdf_table.h"
+#include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/direction_sampler_tables.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_tables_cache.h"
@@ -66,6 +70,59 @@ TEST(GpuSamplerData, ExactEnvTablesAreEightByteAlignedWhereTheLayoutSays) {
         expectDoubles(w, l.columnCdf, exact.columnCdf());
         expectWords(w, l.columnGuide, exact.columnGuide());
         expectDoubles(w, l.pdfs, exact.pdfTable());
+    }
+}
+
+TEST(GpuSamplerData, FlatProductTablesAreEightByteAlignedWhereTheShaderReadsPairs) {
+    namespace fl = flat_layout;
+    // 256 x 128 with a small bright source: both glossy lobes get per-hit products.
+    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
+    image->at(40, 30) = glm::vec3(1e4f);
+    scene::Environment env;
+    env.image = image;
+    const std::vector<SamplerMaterial> materials = {
+        {"ggx r=0.2", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}},
+        {"ggx r=0.5", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}},
+        {"blinn r=0.3", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.3f}},
+    };
+    SceneSamplerTables scene;
+    scene.samplerIndexOfMaterial = {0, 1, 2};
+    scene.tables = DirectionSamplerTables::build(env, materials, SamplerKind::Wavelet);
+    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, materials.size());
+    ASSERT_TRUE(packed.ok()) << packed.error().message();
+    const std::vector<uint32_t>& w = packed->words;
+    EXPECT_EQ(w.size() % 2, 0u);
+    for (size_t i = 0; i < materials.size(); ++i) {
+        SCOPED_TRACE(materials[i].name);
+        const GpuSamplerMaterial& g = packed->materials[i];
+        ASSERT_EQ(g.mode, kGpuSamplerProduct);
+        const FlatProductTables flat = scene.tables->productTables(i)->flatten();
+        EXPECT_EQ(g.tableOffset % 2, 1u);
+        expectWords(w, g.tableOffset, flat.header);
+        const uint32_t bins = w[g.tableOffset + fl::kBinCount];
+        const uint32_t factors = w[g.tableOffset + fl::kFactorCount];
+        ASSERT_GT(bins, 0u);
+        ASSERT_GT(factors, 0u);
+        // The shader's pair reads: (k, ox), (oy, factor) per bin and (firstNode, nodeCount).
+        for (uint32_t b = 0; b < bins; ++b) {
+            const uint32_t at = g.tableOffset + uint32_t(fl::binWordsAt(int(b)));
+            EXPECT_EQ((at + fl::kBinK) % 2, 0u);
+            EXPECT_EQ((at + fl::kBinOy) % 2, 0u);
+        }
+        for (uint32_t f = 0; f < factors; ++f)
+            EXPECT_EQ((g.tableOffset + uint32_t(fl::factorWordsAt(int(bins), int(f))) +
+                       fl::kFactorFirstNode) % 2, 0u);
+        EXPECT_EQ(g.nodeOffset % 2, 0u);
+        ASSERT_FALSE(flat.nodeWords.empty());
+        expectWords(w, g.nodeOffset, flat.nodeWords);
+        for (uint32_t n = 0; n < flat.nodeWords.size() / fl::kNodeWords; ++n) {
+            const uint32_t base = g.nodeOffset + n * fl::kNodeWords;
+            EXPECT_EQ((base + fl::kNodeDetail + 1) % 2, 0u);
+            EXPECT_EQ((base + fl::kNodeChild) % 2, 0u);
+            EXPECT_EQ((base + fl::kNodeChild + 2) % 2, 0u);
+        }
+        for (size_t f = 0; f < flat.scaling.size(); ++f)
+            ASSERT_EQ(std::bit_cast<float>(w[g.scalingOffset + f]), flat.scaling[f]);
     }
 }
 

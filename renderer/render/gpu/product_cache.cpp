@@ -14,6 +14,10 @@ uint32_t gpuProductCachePyramidWords() {
     return ((1u << (2 * (kGpuMaxProductLevel + 1))) - 1u) / 3u;
 }
 
+uint32_t gpuProductCachePyramidEntryWords() {
+    return GpuProductCacheLayout::kPyramidAt + gpuProductCachePyramidWords();
+}
+
 GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height,
                                             const std::vector<GpuSamplerMaterial>& samplerMaterials,
@@ -21,7 +25,9 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
     GpuProductCacheLayout layout;
     const size_t pixels = size_t(width) * size_t(height);
     const CpuCamera camera(scene.camera, width, height);
-    const uint32_t pyramidWords = gpuProductCachePyramidWords();
+    const uint32_t pyramidEntryWords = gpuProductCachePyramidEntryWords();
+    static_assert(GpuProductCacheLayout::kHeaderWords % 2 == 0 &&
+                  GpuProductCacheLayout::kPyramidAt % 2 == 1);
     // Each pixel's entry size (0: none) from its centre ray, rows shared among threads (every
     // scene or camera edit lays the cache out again: one ray per pixel on the render thread cost
     // ~0.7 CPU-s at 512^2), then the offsets in row order, so the layout is deterministic.
@@ -42,7 +48,7 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
                     continue;
                 const bool pyramid = sm.mode == kGpuSamplerProduct && sm.precomputedBins == 0;
                 sizes[size_t(y) * size_t(width) + size_t(x)] =
-                    GpuProductCacheLayout::kHeaderWords + (pyramid ? pyramidWords : 0u);
+                    pyramid ? pyramidEntryWords : GpuProductCacheLayout::kHeaderWords;
             }
     };
     const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
@@ -56,7 +62,8 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
     // the buffer is full (the rest use `mis`'s technique): the same share in every part of the
     // image, so the extra noise spreads evenly instead of starting below a line.
     std::vector<uint32_t> order;
-    uint64_t wanted = pixels;
+    const uint64_t firstEntry = uint64_t(pixels) + (pixels & 1u); // entries on 8-byte boundaries
+    uint64_t wanted = firstEntry;
     for (size_t i = 0; i < pixels; ++i)
         if (sizes[i] != 0u) {
             order.push_back(uint32_t(i));
@@ -66,7 +73,7 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
         std::sort(order.begin(), order.end(), [](uint32_t a, uint32_t b) {
             return std::pair(util::hashU32(a), a) < std::pair(util::hashU32(b), b);
         });
-        uint64_t used = pixels;
+        uint64_t used = firstEntry;
         for (uint32_t i : order) {
             if ((used + sizes[i]) * 4u > maxBytes) {
                 sizes[i] = 0u;
@@ -77,7 +84,7 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
         }
     }
     layout.words.assign(pixels, GpuProductCacheLayout::kNoEntry);
-    uint64_t next = pixels;
+    uint64_t next = firstEntry;
     for (size_t i = 0; i < pixels; ++i) {
         if (sizes[i] == 0u)
             continue;

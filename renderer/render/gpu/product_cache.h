@@ -4,8 +4,13 @@
 // on the CPU BVH, has a material whose `wavelet` policy forms a product: mode Product or
 // BsdfLobe) and where each entry starts; the first pass after a reset fills the entries on the
 // device, later passes read them. Only those pixels take memory: a header of kHeaderWords words,
-// and for a per-hit product (a material without precomputed axis bins) its pyramid's
-// (4^(m+1) - 1) / 3 floats, m = kGpuMaxProductLevel (341 floats, 1460 bytes an entry in all).
+// and for a per-hit product (a material without precomputed axis bins) one pad word and its
+// pyramid's (4^(m+1) - 1) / 3 floats, m = kGpuMaxProductLevel (341 floats, 1464 bytes an entry in
+// all). The shader reads and writes entries through the buffer's u64 view (two words a load on
+// lavapipe, docs/performance.md "The product cache and product tables through u64 views"), so:
+// the pixels' offset words are padded to an even count, every entry starts at an even word and
+// has an even size, and a pyramid starts at an odd word (kPyramidAt), which puts each pair of
+// sibling cells (levels >= 1 start at the odd (4^l - 1) / 3) on an 8-byte boundary.
 #pragma once
 
 #include "render/gpu/gpu_sampler_data.h"
@@ -20,6 +25,7 @@ namespace wavelit::render {
 struct GpuProductCacheLayout {
     static constexpr uint32_t kNoEntry = 0xFFFFFFFFu;
     static constexpr uint32_t kHeaderWords = 24;
+    static constexpr uint32_t kPyramidAt = kHeaderWords + 1; // an entry's pyramid: odd
     // [0, pixels): each pixel's entry offset in words (kNoEntry: none), then the entries'
     // space (zeros: the device writes them).
     std::vector<uint32_t> words;
@@ -29,8 +35,10 @@ struct GpuProductCacheLayout {
     uint64_t bytes() const { return uint64_t(words.size()) * 4u; }
 };
 
-// The words a per-hit product's pyramid takes in an entry.
+// The words a per-hit product's pyramid takes in an entry (an odd count).
 uint32_t gpuProductCachePyramidWords();
+// The words of an entry with a pyramid: kPyramidAt + the pyramid (an even count).
+uint32_t gpuProductCachePyramidEntryWords();
 
 // Lays out the cache for the scene's camera at width x height. samplerMaterials: the packed
 // sampler materials (GpuSamplerData::materials, one per GPU material index). maxBytes bounds the

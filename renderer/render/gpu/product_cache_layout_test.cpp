@@ -51,5 +51,49 @@ TEST(GpuProductCacheLayout, EntriesThatDoNotAllFitAreSpreadOverTheImage) {
     }
 }
 
+// product_cache.glsl reads and writes the entries through the buffer's u64 view: at an odd
+// pixel count (an odd number of offset words) every entry still starts on an 8-byte boundary,
+// entries of either kind (header only, header + pyramid) have even sizes, a pyramid starts at
+// an odd word (its sibling cells of levels >= 1 pair up in u64s), and the buffer is whole u64s.
+TEST(GpuProductCacheLayout, EntriesAndPyramidsSitWhereTheU64ReadsNeedThem) {
+    scene::Material glossy;
+    glossy.id = 1;
+    glossy.brdf = "ggx";
+    glossy.roughness = 0.3f;
+    const auto scene = makeFurnaceScene(glossy, glm::vec3(1.0f), 48, 24);
+    const scene::Bvh bvh = scene::buildBvh(*scene);
+    EXPECT_EQ(GpuProductCacheLayout::kPyramidAt % 2, 1u);
+    for (uint32_t mode : {kGpuSamplerProduct, kGpuSamplerBsdfLobe}) {
+        SCOPED_TRACE(mode);
+        GpuSamplerMaterial material;
+        material.mode = mode;
+        const std::vector<GpuSamplerMaterial> materials{material};
+        constexpr int kWidth = 33, kHeight = 31; // 1023 pixels: an odd count of offset words
+        const GpuProductCacheLayout layout =
+            layoutGpuProductCache(*scene, bvh, kWidth, kHeight, materials, UINT64_MAX);
+        ASSERT_GT(layout.entries, 100u);
+        EXPECT_EQ(layout.words.size() % 2, 0u);
+        const uint32_t entryWords = mode == kGpuSamplerProduct
+                                        ? gpuProductCachePyramidEntryWords()
+                                        : GpuProductCacheLayout::kHeaderWords;
+        EXPECT_EQ(entryWords % 2, 0u);
+        EXPECT_EQ(layout.pyramidEntries, mode == kGpuSamplerProduct ? layout.entries : 0u);
+        uint32_t expected = kWidth * kHeight + 1; // the first entry, after the pad word
+        for (int i = 0; i < kWidth * kHeight; ++i) {
+            const uint32_t at = layout.words[size_t(i)];
+            if (at == GpuProductCacheLayout::kNoEntry) continue;
+            ASSERT_EQ(at, expected) << "pixel " << i; // in pixel order, back to back
+            ASSERT_EQ(at % 2, 0u) << "pixel " << i;
+            expected += entryWords;
+        }
+        EXPECT_EQ(size_t(expected), layout.words.size());
+        // Each level l >= 1 of a pyramid (at its entry's kPyramidAt) starts at an even word, and
+        // a row of its cells has an even count: cells (2x, 2x + 1) share a u64.
+        for (int l = 1; l <= kGpuMaxProductLevel; ++l)
+            EXPECT_EQ((GpuProductCacheLayout::kPyramidAt + ((1u << (2 * l)) - 1u) / 3u) % 2, 0u)
+                << "level " << l;
+    }
+}
+
 } // namespace
 } // namespace wavelit::render

@@ -67,6 +67,7 @@ std::vector<std::string> samplerShaderDefines() {
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
         define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
         define("PRODUCT_CACHE_HEADER_WORDS", int(GpuProductCacheLayout::kHeaderWords)),
+        define("PRODUCT_CACHE_PYRAMID_AT", int(GpuProductCacheLayout::kPyramidAt)),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),
         define("ORACLE_MIN_ENV_SHARE", doubleLiteral(kOracleMinEnvShare)),
         define("MAX_ENV_SHARE", doubleLiteral(kMaxEnvShare)),

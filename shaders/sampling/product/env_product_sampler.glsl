@@ -35,8 +35,12 @@ const int kMassInProductCache = -2;
 float dsMass(DirSampler s, int i) {
     if (s.massOffset >= 0) return uintBitsToFloat(samplerWords[uint(s.massOffset + i)]);
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
-    if (s.massOffset <= kMassInProductCache)
-        return uintBitsToFloat(productCache[uint(kMassInProductCache - s.massOffset + i)]);
+    if (s.massOffset <= kMassInProductCache) {
+        // Through the u64 view, as the entry was written (product_cache.glsl).
+        uint j = uint(kMassInProductCache - s.massOffset + i);
+        uvec2 w = unpackUint2x32(productCache64[j >> 1u]);
+        return uintBitsToFloat((j & 1u) != 0u ? w.y : w.x);
+    }
 #endif
     return gMass[i];
 }
@@ -77,7 +81,13 @@ float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
 // wholly below the horizon is 0 either way: about half of a whole-sphere window's leaves); the split
 // from the cell's node alone, since the cell's mass cancels in the weighted mean (its walk from the
 // root multiplied two decoded splits per level; the env is floored above 0, so the mass is never 0).
-float dsLeafBrdfCos(DirSampler s, int l, int x, int y) {
+// The cell's node is envFindNode's, found from its parent's: `parent` (the env node of cell
+// (l - 1, parentCell), at level parentReached, with its firstChild) is looked up when a call
+// needs it and parentCell is not (x / 2, y / 2) (parent < 0: none yet), and kept for the next
+// calls: one walk from the root per 2 x 2 sibling leaves, not one per leaf (each step a word
+// load on lavapipe).
+float dsLeafBrdfCos(DirSampler s, int l, int x, int y, inout int parent, inout ivec2 parentCell,
+                    inout int parentReached, inout int parentFirstChild) {
     double side = 1.0LF / double(1 << (l + 1));
     double f[4];
     bool lit = false;
@@ -87,8 +97,14 @@ float dsLeafBrdfCos(DirSampler s, int l, int x, int y) {
         lit = lit || f[c] > 0.0LF;
     }
     if (!lit) return 0.0;
-    int reached;
-    int node = envFindNode(l, x, y, reached);
+    if (parent < 0 || parentCell != ivec2(x >> 1, y >> 1)) {
+        parentCell = ivec2(x >> 1, y >> 1);
+        parent = envFindNode(l - 1, parentCell.x, parentCell.y, parentReached);
+        parentFirstChild = parentReached == l - 1 ? envNodes[parent].firstChild : -1;
+    }
+    // envFindNode(l, x, y): one step below the parent where the tree goes on.
+    int node = parentFirstChild >= 0 ? parentFirstChild + (x & 1) + 2 * (y & 1) : parent;
+    int reached = parentFirstChild >= 0 ? l : parentReached;
     double w[4] = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
     if (reached == l) envChildShares(node, w);
     double weighted = 0.0LF, weight = 0.0LF;
@@ -115,28 +131,39 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
                 float sc = gMass[off + y * side + x];
                 int node = gNode[off + y * side + x];
                 vec3 d = vec3(0.0);
-                uint base = 0u;
+                ivec4 children = ivec4(-1);
                 if (node >= 0) {
-                    base = flatNodeBase(sm, firstNode, node);
+                    uint base = flatNodeBase(sm, firstNode, node);
                     d = flatNodeDetails(base);
+                    if (l + 1 < m) children = flatNodeChildren(base);
                 }
                 float child[4] = float[4](0.5 * (sc + d.x + d.y + d.z), 0.5 * (sc - d.x + d.y - d.z),
                                           0.5 * (sc + d.x - d.y - d.z), 0.5 * (sc - d.x - d.y + d.z));
                 for (int c = 0; c < 4; ++c) {
                     int i = offChild + (2 * y + (c >> 1)) * (2 * side) + 2 * x + (c & 1);
                     gMass[i] = child[c];
-                    if (l + 1 < m) gNode[i] = node >= 0 ? flatNodeChild(base, c) : -1;
+                    if (l + 1 < m) gNode[i] = children[c];
                 }
             }
     }
     // Leaves: average env luminance (2^m x the scaling coefficient), clamped at 0 (truncation
     // leaves negatives), times BRDF x cos env-weighted over the leaf's four sub-cells.
+    // Visited by 2 x 2 blocks, which are sibling leaves sharing their parent's env node when
+    // m >= 2 (the window's origin (ox, oy) << (m - 1) is then even; dsLeafBrdfCos checks).
     int side = 1 << m, off = pyramidOffset(m);
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
-            float e = max(0.0, gMass[off + y * side + x] * float(side));
-            int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
-            gMass[off + y * side + x] = e > 0.0 ? e * dsLeafBrdfCos(s, s.k + m, gx, gy) : 0.0;
+    for (int by = 0; by < side; by += 2)
+        for (int bx = 0; bx < side; bx += 2) {
+            int parent = -1, parentReached = 0, parentFirstChild = -1;
+            ivec2 parentCell = ivec2(0);
+            for (int c = 0; c < 4; ++c) {
+                int x = bx + (c & 1), y = by + (c >> 1);
+                float e = max(0.0, gMass[off + y * side + x] * float(side));
+                int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
+                gMass[off + y * side + x] =
+                    e > 0.0 ? e * dsLeafBrdfCos(s, s.k + m, gx, gy, parent, parentCell,
+                                                parentReached, parentFirstChild)
+                            : 0.0;
+            }
         }
     return dsSumPyramid(m);
 }
@@ -164,7 +191,20 @@ void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
         b = ab.y;
         c = cd.x;
         d = cd.y;
-    } else {
+    }
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+    else if (s.massOffset <= kMassInProductCache) {
+        // The pixel's cached pyramid: it starts at an odd word too (product_cache.h kPyramidAt).
+        uint at = uint(kMassInProductCache - s.massOffset);
+        vec2 ab = uintBitsToFloat(unpackUint2x32(productCache64[(at + uint(c0)) >> 1u]));
+        vec2 cd = uintBitsToFloat(unpackUint2x32(productCache64[(at + uint(c1)) >> 1u]));
+        a = ab.x;
+        b = ab.y;
+        c = cd.x;
+        d = cd.y;
+    }
+#endif
+    else {
         a = dsMass(s, c0);
         b = dsMass(s, c0 + 1);
         c = dsMass(s, c1);
@@ -179,10 +219,12 @@ void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
 // are weighted by the env's own split of the cell (its quadtree's conditional probabilities)
 // times BRDF x cos at the child's centre, plus WAVELIT_LOBE_FLOOR of the largest so no child with
 // env light loses support. The weights depend only on the cell, so the pdf's walk is exact.
-// `node`, `reached`: envFindNode's answer for the cell.
-void dsRefineWeights(DirSampler s, int l, int x, int y, int node, int reached, out double w[4]) {
+// `node`, `reached`: envFindNode's answer for the cell. Returns the cell's node's firstChild
+// (-1: the tree is constant below the cell, or above it).
+int dsRefineWeights(DirSampler s, int l, int x, int y, int node, int reached, out double w[4]) {
     w = double[4](0.25LF, 0.25LF, 0.25LF, 0.25LF);
-    if (reached == l) envChildShares(node, w);
+    int firstChild = -1;
+    if (reached == l) firstChild = envChildSharesAndFirst(node, w);
     double side = 1.0LF / double(1 << (l + 1));
     float h[4];
     float hmax = 0.0;
@@ -193,6 +235,7 @@ void dsRefineWeights(DirSampler s, int l, int x, int y, int node, int reached, o
     }
     if (hmax > 0.0 && !isinf(hmax))
         for (int c = 0; c < 4; ++c) w[c] *= double(h[c] + WAVELIT_LOBE_FLOOR * hmax);
+    return firstChild;
 }
 
 // lobeRefineLevels (env_product_tables.h): levels below leaf level `leafLevel` until a cell is
@@ -241,13 +284,13 @@ double dsDescendProduct(DirSampler s, bool drawing, inout dvec2 u, dvec2 p, out 
     int node = envFindNode(l, x, y, reached);
     for (int r = 0; r < s.refineLevels; ++r) {
         double w[4], p0, p1;
-        dsRefineWeights(s, l, x, y, node, reached, w);
+        int firstChild = dsRefineWeights(s, l, x, y, node, reached, w);
         dsParts(w[0] + w[1], w[2] + w[3], p0, p1);
         int cy = takeShare(drawing, p0, p1, childHolding(drawing, p.y, l, y), u.y, probability);
         dsParts(w[2 * cy], w[2 * cy + 1], p0, p1);
         int cx = takeShare(drawing, p0, p1, childHolding(drawing, p.x, l, x), u.x, probability);
-        if (reached == l && envNodes[node].firstChild >= 0) {
-            node = envNodes[node].firstChild + cx + 2 * cy;
+        if (firstChild >= 0) { // reached == l and the tree goes on below the cell
+            node = firstChild + cx + 2 * cy;
             reached = l + 1;
         }
         l += 1;

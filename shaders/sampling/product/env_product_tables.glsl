@@ -1,9 +1,10 @@
 // Reading one material's flat product tables (render/sampling/product/env_product_tables.h,
 // MaterialProductTables::flatten(); the word layout is flat_product_layout.h's, handed over as the
 // WAVELIT_FLAT_* defines). The including shader declares
-//     buffer ... { uint samplerWords[]; };
-// holding each material's header at SamplerMaterial.tableOffset, its node words at nodeOffset and
-// its scaling floats at scalingOffset.
+//     buffer ... { uint samplerWords[]; };  buffer ... { uint64_t samplerWords64[]; };
+// (the same buffer) holding each material's header at SamplerMaterial.tableOffset (odd), its node
+// words at nodeOffset (even) and its scaling floats at scalingOffset; word pairs are read through
+// the u64 view (gpu_sampler_data.cpp puts them on 8-byte boundaries).
 #ifndef WAVELIT_ENV_PRODUCT_TABLES_GLSL
 #define WAVELIT_ENV_PRODUCT_TABLES_GLSL
 
@@ -19,10 +20,13 @@ void flatBinOf(SamplerMaterial sm, vec3 axisLocal, out int k, out int ox, out in
     vec2 p = octToSquare(axisLocal);
     int bx = min(int(p.x * float(bins)), bins - 1), by = min(int(p.y * float(bins)), bins - 1);
     uint at = sm.tableOffset + WAVELIT_FLAT_HEADER_WORDS + WAVELIT_FLAT_BIN_WORDS * uint(by * bins + bx);
-    k = int(samplerWords[at + WAVELIT_FLAT_BIN_K]);
-    ox = int(samplerWords[at + WAVELIT_FLAT_BIN_OX]);
-    oy = int(samplerWords[at + WAVELIT_FLAT_BIN_OY]);
-    factor = samplerWords[at + WAVELIT_FLAT_BIN_FACTOR];
+    // (k, ox) and (oy, factor): two u64 loads from the even `at`.
+    uvec2 kox = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_BIN_K) >> 1u]);
+    uvec2 oyf = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_BIN_OY) >> 1u]);
+    k = int(kox.x);
+    ox = int(kox.y);
+    oy = int(oyf.x);
+    factor = oyf.y;
 }
 
 // Where factor `factor`'s node words start (its first node's word index) and how many nodes.
@@ -30,8 +34,9 @@ void flatFactorNodes(SamplerMaterial sm, uint factor, out uint firstNode, out ui
     uint at = sm.tableOffset + WAVELIT_FLAT_HEADER_WORDS +
               WAVELIT_FLAT_BIN_WORDS * flatHeader(sm, WAVELIT_FLAT_BIN_COUNT) +
               WAVELIT_FLAT_FACTOR_WORDS * factor;
-    firstNode = samplerWords[at + WAVELIT_FLAT_FACTOR_FIRST_NODE];
-    nodeCount = samplerWords[at + WAVELIT_FLAT_FACTOR_NODE_COUNT];
+    uvec2 w = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_FACTOR_FIRST_NODE) >> 1u]);
+    firstNode = w.x;
+    nodeCount = w.y;
 }
 
 // The factor's root scaling coefficient F0(0,0).
@@ -39,18 +44,20 @@ float flatScaling(SamplerMaterial sm, uint factor) {
     return uintBitsToFloat(samplerWords[sm.scalingOffset + factor]);
 }
 
-// Node `node` (relative to the factor's first) of a factor: its three Haar details and the index
-// of child c (-1: none).
+// Node `node` (relative to the factor's first) of a factor: its three Haar details and the
+// indices of its four children (-1: none). Nodes start at even words with an even stride, the
+// first detail at an odd word: the details in two loads (the first alone, then a u64), the
+// children in two u64s, not seven word loads.
 uint flatNodeBase(SamplerMaterial sm, uint firstNode, int node) {
     return sm.nodeOffset + (firstNode + uint(node)) * WAVELIT_FLAT_NODE_WORDS;
 }
 vec3 flatNodeDetails(uint base) {
     return vec3(uintBitsToFloat(samplerWords[base + WAVELIT_FLAT_NODE_DETAIL]),
-                uintBitsToFloat(samplerWords[base + WAVELIT_FLAT_NODE_DETAIL + 1u]),
-                uintBitsToFloat(samplerWords[base + WAVELIT_FLAT_NODE_DETAIL + 2u]));
+                uintBitsToFloat(unpackUint2x32(samplerWords64[(base + WAVELIT_FLAT_NODE_DETAIL + 1u) >> 1u])));
 }
-int flatNodeChild(uint base, int c) {
-    return int(samplerWords[base + WAVELIT_FLAT_NODE_CHILD + uint(c)]);
+ivec4 flatNodeChildren(uint base) {
+    uint at = (base + WAVELIT_FLAT_NODE_CHILD) >> 1u;
+    return ivec4(unpackUint2x32(samplerWords64[at]), unpackUint2x32(samplerWords64[at + 1u]));
 }
 
 #endif
