@@ -56,8 +56,8 @@ uint envCdfPick(uint cdf, uint guide, uint n, inout double u) {
 
 // The *Sized functions take the tables' (width, height), envExactSize(offset), from a caller that
 // has read it already: a pdf, a texel lookup and a draw at one vertex read it once, not three
-// times (a buffer load on lavapipe is not shared between calls: the kernel writes other buffers,
-// so Mesa does not merge loads from this one).
+// times (each is a per-lane load loop on lavapipe; the kernel writes other buffers, so the
+// repeated loads are not left to Mesa to merge).
 double envExactTexelPdfSized(uint offset, uvec2 size, uvec2 t) {
     uint pdfs = offset + 2u + 2u * size.y + 2u * (size.y + 1u) + envEvenUp(size.y) +
                 2u * size.y * (size.x + 1u) + envEvenUp(size.y * size.x);
