@@ -8,7 +8,9 @@
 //   environment, light, material colour /      applied to both previews at once (the full
 //   emission (cheap, docs/relighting.md §3)    update is tens of ms): an exact frame;
 //   object, other material edits (a drag,      applyCoarse, then the corrected first answer
-//   a roughness slider)                        (firstAnswer, tens of ms): an APPROXIMATE frame;
+//   a roughness slider)                        (firstAnswer, tens of ms): an APPROXIMATE frame
+//                                              (for material edits alone: the full preview's
+//                                              untruncated answer, docs/relighting.md §7.0g);
 //                                              once no job came for kFinePauseMs, applyFine
 //                                              (every pending edit merged into one full update)
 //                                              and the exact frame;

@@ -21,7 +21,7 @@ const char* kUsage =
     "  bench SCENE [--reference REF.exr] [--samplers a,b,..] [--time SECONDS] --out DIR\n"
     "  relight SCENE --edits EDITS.json --out DIR --report R.json [--reference-spp N]\n"
     "         [--width W --height H] [--preview PW] [--level N|auto] [--keep K] [--threads T] [--skip-full-rebuild]\n"
-    "         [--coarse-level N [--coarse-stride S]]\n"
+    "         [--coarse-level N [--coarse-stride S] [--first-untruncated-narrow]]\n"
     "  validate FILE\n"
     "  wavelet product A.exr B.exr [C.exr ...] -o OUT.exr [--keep K] [--method dense|sparse]\n"
     "  wavelet sample A.exr [B.exr ...] --count N [--seed S] [--keep K] -o SAMPLES.csv\n"

@@ -17,7 +17,11 @@
 // with a reference); and the corrected first answer (relight/first_answer.h, approximate):
 // DIR/edit_<i>_first.exr, firstMs / firstCpuMs (the coarse edit, deferring the moved object's
 // own points, + the correction), firstImageMs, and coarseVsPreviewRelRMSE / firstVsPreviewRelRMSE
-// against this edit's exact preview (the coarse image with those points stale).
+// against this edit's exact preview (the coarse image with those points stale). A material edit's
+// first answer is instead the full preview's untruncated one (RelightPreview::materialFirstAnswer,
+// docs/relighting.md §7.0g): "firstAnswer": "untruncated", firstPointsTouched — as the editor's
+// coarse-to-fine, only where no edited material's lobe is narrower than a texel, unless
+// --first-untruncated-narrow; with a reference every first answer also has firstRelRMSE.
 // --shadow-field: translation drags of the first object the list translates go through its
 // shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
@@ -90,7 +94,8 @@ int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
                                    "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride",
                                    "--field-shells", "--field-directions", "--field-inner", "--field-outer"},
-                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest"});
+                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest",
+                             "--first-untruncated-narrow"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
         return reportError(makeError(ErrorKind::Usage, "", "relight needs exactly one SCENE"));
@@ -125,6 +130,9 @@ int runRelight(const std::vector<std::string>& argv) {
             *target = x;
         }
 
+    // --first-untruncated-narrow: the untruncated material first answer for narrow lobes too
+    // (the editor's coarse-to-fine takes the corrected one there; for measuring, §7.0g).
+    const bool untruncatedNarrow = args->has("--first-untruncated-narrow");
     const std::string scenePath = args->positional()[0];
     auto loaded = scene::loadScene(scenePath);
     if (!loaded) {
@@ -223,16 +231,33 @@ int runRelight(const std::vector<std::string>& argv) {
             // The corrected first answer's inputs, taken when the full preview was last up to date
             // (here: before this edit); the editor takes them after applyFine, off the drag.
             const relight::FirstAnswerBase base = relight::firstAnswerBase(**preview, *coarse);
+            // A material edit: the full preview's untruncated answer (no T rebuilt), as
+            // CoarseToFinePreview::applyCoarse takes it; the coarse preview gets the edit after
+            // it (the editor's gets it with the full update), timed on its own (coarseMs).
+            util::Timer materialTimer;
+            const double materialCpuBefore = processCpuMs();
+            auto material = (*preview)->materialFirstAnswer(scene, edit.changes, !untruncatedNarrow);
+            if (material) {
+                util::Timer firstTimer;
+                firstImage = relight::nearestScaled(material->image, *width, *height);
+                e["firstImageMs"] = firstTimer.milliseconds();
+                e["firstMs"] = materialTimer.milliseconds();
+                e["firstCpuMs"] = processCpuMs() - materialCpuBefore;
+                e["firstAnswer"] = "untruncated";
+                e["firstPointsTouched"] = material->pointsTouched;
+            }
             util::Timer coarseTimer;
             const double cpuBefore = processCpuMs();
             coarse->applyChanges(scene, edit.changes, /*deferMovedObjects=*/true);
             e["coarseMs"] = coarseTimer.milliseconds();
-            util::Timer firstTimer;
-            firstImage = relight::correctedFirstAnswer(base, *coarse, *width, *height);
-            e["firstImageMs"] = firstTimer.milliseconds();
-            e["firstMs"] = coarseTimer.milliseconds(); // the coarse edit + the corrected image
-            e["firstCpuMs"] = processCpuMs() - cpuBefore;
-            e["firstAnswer"] = "approximate";
+            if (!material) {
+                util::Timer firstTimer;
+                firstImage = relight::correctedFirstAnswer(base, *coarse, *width, *height);
+                e["firstImageMs"] = firstTimer.milliseconds();
+                e["firstMs"] = coarseTimer.milliseconds(); // the coarse edit + the corrected image
+                e["firstCpuMs"] = processCpuMs() - cpuBefore;
+                e["firstAnswer"] = "approximate";
+            }
             const std::string firstFile = (out / ("edit_" + std::to_string(i) + "_first.exr")).string();
             if (auto st = scene::writeExr(firstFile, *firstImage); !st) return reportError(st.error());
             util::Timer coarseImageTimer;
@@ -294,6 +319,7 @@ int runRelight(const std::vector<std::string>& argv) {
             if (!reference) return reportError(reference.error());
             e["relRMSE"] = std::sqrt(render::relativeMse(image, *reference));
             if (coarseImage) e["coarseRelRMSE"] = std::sqrt(render::relativeMse(*coarseImage, *reference));
+            if (firstImage) e["firstRelRMSE"] = std::sqrt(render::relativeMse(*firstImage, *reference));
             e["meanPreview"] = render::meanValue(image);
             e["meanReference"] = render::meanValue(*reference);
             if (const char* keepRef = std::getenv("WAVELIT_RELIGHT_KEEP_REFERENCE"); keepRef && *keepRef == '1')

@@ -1,5 +1,7 @@
 #include "relight/coarse_to_fine.h"
 
+#include "util/timer.h"
+
 #include <algorithm>
 
 namespace wavelit::relight {
@@ -32,13 +34,38 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
 }
 
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
-    const EditSummary summary = m_coarse->applyChanges(edited, changes, m_deferMovedObjects);
-    for (const scene::Invalidation& inv : changes.invalidations())
-        if (inv.factor == scene::FactorKind::Environment || inv.factor == scene::FactorKind::Light ||
-            inv.factor == scene::FactorKind::Camera)
-            m_correctable = false;
+    scene::ChangeSet merged = m_pending ? m_pending->changes : scene::ChangeSet{};
+    merged.merge(changes);
+    // Only material edits since the full preview's state: its visibility stands, so the first
+    // answer is its untruncated material answer; the coarse preview takes these edits later.
+    util::Timer timer;
+    auto material = m_fine->materialFirstAnswer(edited, merged, /*wideLobesOnly=*/true);
+    EditSummary summary;
+    if (material) {
+        summary.kind = "material";
+        summary.method = "untruncated";
+        for (const std::string& name : material->materials) summary.factorsRebuilt.push_back("brdf first answer:" + name);
+        summary.pointsTouched = material->pointsTouched;
+        summary.pointsMs = timer.milliseconds();
+        m_material = std::move(material->image);
+        if (m_coarseBehind) m_coarseBehind->merge(changes);
+        else m_coarseBehind = changes;
+    } else {
+        m_material.reset();
+        scene::ChangeSet coarse = changes;
+        if (m_coarseBehind) { // the material edits it has not had, with this one
+            coarse = std::move(*m_coarseBehind);
+            coarse.merge(changes);
+            m_coarseBehind.reset();
+        }
+        summary = m_coarse->applyChanges(edited, coarse, m_deferMovedObjects);
+        for (const scene::Invalidation& inv : changes.invalidations())
+            if (inv.factor == scene::FactorKind::Environment || inv.factor == scene::FactorKind::Light ||
+                inv.factor == scene::FactorKind::Camera)
+                m_correctable = false;
+    }
     if (m_pending) {
-        m_pending->changes.merge(changes);
+        m_pending->changes = std::move(merged);
         *m_pending->scene = edited;
     } else {
         m_pending = Pending{std::make_unique<scene::Scene>(edited), changes};
@@ -55,7 +82,10 @@ EditSummary CoarseToFinePreview::applyFine() {
     Pending pending = std::move(*m_pending);
     m_pending.reset();
     const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);
-    m_coarse->applyChanges(m_coarse->scene(), scene::ChangeSet{}); // rebuilds deferred points
+    // Rebuilds deferred points, with the material edits the coarse preview is behind by.
+    if (m_coarseBehind) m_coarse->applyChanges(*pending.scene, *m_coarseBehind);
+    else m_coarse->applyChanges(m_coarse->scene(), scene::ChangeSet{});
+    m_coarseBehind.reset();
     snapshot();
     return summary;
 }
@@ -63,10 +93,12 @@ EditSummary CoarseToFinePreview::applyFine() {
 void CoarseToFinePreview::snapshot() {
     m_base = firstAnswerBase(*m_fine, *m_coarse);
     m_correctable = true;
+    m_material.reset();
 }
 
 util::ImageRGB CoarseToFinePreview::firstAnswer(int width, int height) const {
     if (!m_pending) return m_fine->image(width, height);
+    if (m_material) return nearestScaled(*m_material, width, height);
     if (!m_correctable) return m_coarse->image(width, height);
     return correctedFirstAnswer(m_base, *m_coarse, width, height);
 }
@@ -76,10 +108,11 @@ size_t CoarseToFinePreview::extraBytes() const {
     const size_t pointBytes = sizeof(PreviewPoint);
     return m_coarse->stateBytes() + m_coarse->points().size() * pointBytes + imageBytes(m_base.fine) +
            imageBytes(m_base.coarse) + (m_base.finePoints.size() + m_base.coarsePoints.size()) * pointBytes +
-           m_base.objects.size() * sizeof(glm::mat4);
+           m_base.objects.size() * sizeof(glm::mat4) + (m_material ? imageBytes(*m_material) : 0);
 }
 
 util::ImageRGB CoarseToFinePreview::image(int width, int height) const {
+    if (m_pending && m_material) return nearestScaled(*m_material, width, height);
     return m_pending ? m_coarse->image(width, height) : m_fine->image(width, height);
 }
 

@@ -37,21 +37,31 @@ public:
                                           int pointStride = 1);
 
     // The first answer: `edited` is the scene after `changes`; the full preview is now behind.
+    // While every pending edit is a material edit (a roughness slider) and no edited material's
+    // lobe is narrower than a texel, the first answer is the
+    // full preview's materialFirstAnswer (relight_preview.h, docs/relighting.md §7.0g: the new
+    // material's points summed over the texels without T's Haar transform and top K, the rest
+    // of the image exact) and the coarse preview is left behind by those edits until applyFine
+    // or the next other edit (which takes them with it); the summary then has kind "material"
+    // and method "untruncated". Otherwise the edit goes to the coarse preview.
     EditSummary applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes);
     // Brings the full preview up to the newest edited scene with every pending change set merged
     // into one (an empty summary, kind "display", when nothing is pending).
     EditSummary applyFine();
     bool finePending() const { return m_pending.has_value(); }
 
-    // The full preview's image when nothing is pending, else the coarse one's.
+    // The full preview's image when nothing is pending, else the coarse one's (the material
+    // first answer while that is the first answer: the coarse preview is behind then).
     util::ImageRGB image(int width, int height) const;
     util::ImageRGB coarseImage(int width, int height) const { return m_coarse->image(width, height); }
     // APPROXIMATE first answer while the full one is pending (first_answer.h): the full image of
     // the last applyFine corrected by the coarse preview's change since; the full image when
     // nothing is pending. Much closer to the exact full answer than coarseImage for object and
     // material edits (§7.0c); once an environment, light or camera edit is pending it is
-    // coarseImage (there the correction measured worse than the coarse image).
+    // coarseImage (there the correction measured worse than the coarse image). While only
+    // material edits are pending: the material first answer (applyCoarse).
     util::ImageRGB firstAnswer(int width, int height) const;
+    bool materialFirstAnswer() const { return m_material.has_value(); }
 
     const RelightPreview& fine() const { return *m_fine; }
     const RelightPreview& coarse() const { return *m_coarse; }
@@ -71,6 +81,10 @@ private:
     // At the full preview's state (create, applyFine): its image and the coarse one's.
     FirstAnswerBase m_base;
     bool m_correctable = true; // no environment, light or camera edit pending
+    // The material first answer (preview resolution) while only material edits are pending, and
+    // those edits, which the coarse preview has not had yet.
+    std::optional<util::ImageRGB> m_material;
+    std::optional<scene::ChangeSet> m_coarseBehind;
     bool m_deferMovedObjects = false;
     void snapshot();
 };

@@ -110,6 +110,15 @@ util::ImageRGB correctedFirstAnswer(const FirstAnswerBase& then, const RelightPr
     return out;
 }
 
+util::ImageRGB nearestScaled(const util::ImageRGB& image, int width, int height) {
+    if (width == image.width && height == image.height) return image;
+    util::ImageRGB out(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            out.at(x, y) = image.at(nearest(x, width, image.width), nearest(y, height, image.height));
+    return out;
+}
+
 double relativeRmse(const util::ImageRGB& image, const util::ImageRGB& reference) {
     double sum = 0.0;
     for (size_t i = 0; i < image.pixels.size(); ++i)

@@ -40,6 +40,9 @@ FirstAnswerBase firstAnswerBase(const RelightPreview& fine, const RelightPreview
 util::ImageRGB correctedFirstAnswer(const FirstAnswerBase& then, const RelightPreview& coarseNow, int width,
                                     int height);
 
+// `image` scaled to width x height by nearest pixel (RelightPreview::image's mapping).
+util::ImageRGB nearestScaled(const util::ImageRGB& image, int width, int height);
+
 // sqrt of render/session/image_metrics.h's relative MSE (the same formula: squared difference over
 // reference^2 + 0.01, averaged over pixels and channels); relight may not link render.
 double relativeRmse(const util::ImageRGB& image, const util::ImageRGB& reference);

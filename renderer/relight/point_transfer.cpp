@@ -4,6 +4,7 @@
 #include "relight/texel_values.h"
 #include "relight/transfer_compression.h"
 #include "util/hemisphere_sampling.h"
+#include "wavelet/haar.h"
 
 #include <glm/geometric.hpp>
 
@@ -63,9 +64,11 @@ bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) &
 // visit(entry, white, black) for every entry of the light that the point sees, in projection
 // order, with its contribution to <T, L_k> (black only when `black`): lightTermWith's sum term by
 // term, and the shadow field's per-entry cache (drag_cache.h).
-template <class Visit>
+// `texelValue(texel, blackOut)`: f x cosine at a visible texel (unshadowed's value; the
+// material's first answer has them from its batch already).
+template <class Visit, class TexelValue>
 void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                           const scene::Light& light, bool black, Visit&& visit) {
+                           const scene::Light& light, bool black, TexelValue&& texelValue, Visit&& visit) {
     const ResolvedMaterial& m = materialOf(ctx, p);
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
@@ -92,9 +95,27 @@ void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, co
             continue;
         }
         glm::vec3 f0(0.0f);
-        const glm::vec3 w = unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0) * e.weight;
+        const glm::vec3 value = visible(s, e.texel) ? texelValue(e.texel, &f0)
+                                                    : unshadowed(ctx, p, frame, wo, e.texel, m.params,
+                                                                 black ? &m.black : nullptr, &f0);
+        const glm::vec3 w = value * e.weight;
         visit(e, w, black ? f0 * e.weight : glm::vec3(0.0f));
     }
+}
+
+// forEachSeenLightEntry with unshadowed at every texel.
+template <class Visit>
+void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                           const scene::Light& light, bool black, Visit&& visit) {
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const util::Frame frame = util::Frame::fromNormal(p.shading);
+    const glm::vec3 wo = frame.toLocal(p.wo);
+    forEachSeenLightEntry(
+        ctx, p, s, light, black,
+        [&](size_t texel, glm::vec3* f0) {
+            return unshadowed(ctx, p, frame, wo, texel, m.params, black ? &m.black : nullptr, f0);
+        },
+        visit);
 }
 
 // <T, L_k> for the primary parameters, and for black when `black` is given.
@@ -256,8 +277,12 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
     for (size_t k = 0; k < ctx.scene->lighting.lights.size(); ++k) updateLightTerms(ctx, p, s, k);
 }
 
-glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
-                   const std::vector<glm::vec3>& lightPowers) {
+namespace {
+
+// PointState and PointTerms alike (the same sums in the same order).
+template <class Terms>
+glm::vec3 mixWith(const ResolvedMaterial& m, const Terms& s, const glm::vec3& envScale,
+                  const std::vector<glm::vec3>& lightPowers) {
     glm::vec3 white = s.envTerm * envScale;
     for (size_t k = 0; k < s.lightTerms.size(); ++k) white += s.lightTerms[k] * lightPowers[k];
     switch (m.colourUse) {
@@ -271,6 +296,77 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::ve
     case ColourUse::Ignored: break;
     }
     return white;
+}
+
+} // namespace
+
+glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
+                   const std::vector<glm::vec3>& lightPowers) {
+    return mixWith(m, s, envScale, lightPowers);
+}
+
+glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::vec3& envScale,
+                   const std::vector<glm::vec3>& lightPowers) {
+    return mixWith(m, t, envScale, lightPowers);
+}
+
+std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs) {
+    std::vector<glm::vec3> out(dirs.count(), glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c) {
+        if (env.coefficients[size_t(c)].size() != out.size()) continue; // no environment: zero
+        const wavelet::SquareGrid grid = wavelet::inverseHaar(wavelet::HaarImage{env.level, env.coefficients[size_t(c)]});
+        for (size_t t = 0; t < out.size(); ++t) out[t][c] = float(grid.values[t] * dirs.texelSolidAngle());
+    }
+    return out;
+}
+
+void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                      const std::vector<glm::vec3>& envTexels, PointTerms& out) {
+    thread_local TexelValues values;
+    const ResolvedMaterial& m = materialOf(ctx, p);
+    const bool affine = m.colourUse == ColourUse::Affine;
+    visibleTexelValues(ctx, p, s, affine, values);
+    glm::dvec3 env(0.0), env0(0.0);
+    if (affine && m.oneEval) { // grey values: one channel of each
+        for (size_t j = 0; j < values.texel.size(); ++j) {
+            const glm::dvec3 l(envTexels[values.texel[j]]);
+            env += double(values.white[j].x) * l;
+            env0 += double(values.black[j].x) * l;
+        }
+    } else {
+        for (size_t j = 0; j < values.texel.size(); ++j) {
+            const glm::dvec3 l(envTexels[values.texel[j]]);
+            env += glm::dvec3(values.white[j]) * l;
+            if (affine) env0 += glm::dvec3(values.black[j]) * l;
+        }
+    }
+    out.envTerm = glm::vec3(env);
+    out.envTerm0 = glm::vec3(env0);
+    // The light terms as lightTermWith sums them, taking f x cosine at visible texels from the
+    // batch above (the same floats as unshadowed's: texel_values.h) instead of a scalar
+    // evaluation per texel (a narrow lobe's: kSub^2 of them).
+    thread_local std::vector<int32_t> slot;
+    slot.resize(ctx.dirs->count(), -1);
+    for (size_t j = 0; j < values.texel.size(); ++j) slot[values.texel[j]] = int32_t(j);
+    auto texelValue = [&](size_t texel, glm::vec3* f0) {
+        const size_t j = size_t(slot[texel]);
+        if (affine) *f0 = values.black[j];
+        return values.white[j];
+    };
+    const auto& lights = ctx.scene->lighting.lights;
+    out.lightTerms.resize(lights.size());
+    out.lightTerms0.resize(affine ? lights.size() : 0);
+    for (size_t k = 0; k < lights.size(); ++k) {
+        glm::vec3 sum(0.0f), sum0(0.0f);
+        forEachSeenLightEntry(ctx, p, s, lights[k], affine, texelValue,
+                              [&](const TexelWeight&, const glm::vec3& w, const glm::vec3& b) {
+                                  sum += w;
+                                  sum0 += b;
+                              });
+        out.lightTerms[k] = sum;
+        if (affine) out.lightTerms0[k] = sum0;
+    }
+    for (const uint32_t t : values.texel) slot[t] = -1;
 }
 
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,

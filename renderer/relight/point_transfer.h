@@ -130,6 +130,23 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
 glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
                    const std::vector<glm::vec3>& lightPowers);
 
+// A point's terms as PointState caches them (white, and black for an Affine BRDF), on their own.
+struct PointTerms {
+    glm::vec3 envTerm{0.0f}, envTerm0{0.0f};
+    std::vector<glm::vec3> lightTerms, lightTerms0;
+};
+glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::vec3& envScale,
+                   const std::vector<glm::vec3>& lightPowers);
+// The terms without T (a material edit's first answer, docs/relighting.md §7.0g): the environment
+// term as the texel sum of f x cosine x visibility x L(t) dOmega over the visible texels — by
+// Parseval 4 pi <T, L> with every Haar coefficient kept, so no transform and no top K — and each
+// light term as lightTerm computes it (never from T). `envTexels`: L(t) dOmega per texel per unit
+// environmentScale(), the inverse Haar transform of the environment factor (envTexelValues).
+// Reads s's visibility only, so s may hold T of another material.
+void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                      const std::vector<glm::vec3>& envTexels, PointTerms& out);
+std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs);
+
 // T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
 // values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF
 // (else empty). For the shadow field's drag cache (drag_cache.h).

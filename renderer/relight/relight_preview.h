@@ -33,6 +33,7 @@
 #include "util/result.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -106,6 +107,28 @@ public:
     const ShadowField* shadowField() const { return m_field ? &m_field->field : nullptr; }
     const std::vector<PointDragCache>* dragCaches() const { return m_field ? &m_field->caches : nullptr; }
     const std::vector<glm::vec3>& fieldEnvTexels() const; // L(t) dOmega per texel (tests)
+
+    // The first answer of a material edit (docs/relighting.md §7.0g) without applying it: the
+    // image after `changes`, `edited` being this preview's scene after them, when they edit
+    // materials only (BRDF parameters, the BRDF, colour, emission). On the points whose T the
+    // edit invalidates (applyChanges would rebuild them) the terms come from untruncatedTerms
+    // (point_transfer.h) — the cached visibility, the new f, the full-resolution L: the texel sum
+    // that equals the full preview at every Haar coefficient, with no transform and no top K;
+    // elsewhere from the cached terms with the edited colours and emissions. So it differs from
+    // the full answer (applyChanges, then image()) by T's truncation to K coefficients only.
+    // The preview is unchanged. nullopt when the change set holds anything else, or some point is
+    // deferred or taken from a shadow field, or — with wideLobesOnly — when a material it would
+    // recompute has a lobe narrower than a texel (ResolvedMaterial::narrow: f averaged over kSub^2
+    // directions in each texel near the mirror direction; measured 2-4x the cost of a wide lobe's
+    // answer and over the frame budget, §7.0g).
+    struct MaterialFirstAnswer {
+        util::ImageRGB image; // at preview resolution
+        size_t pointsTouched = 0;
+        std::vector<std::string> materials; // whose points were recomputed
+    };
+    std::optional<MaterialFirstAnswer> materialFirstAnswer(const scene::Scene& edited,
+                                                           const scene::ChangeSet& changes,
+                                                           bool wideLobesOnly = false) const;
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).
     util::ImageRGB image() const;

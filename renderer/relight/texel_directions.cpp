@@ -31,6 +31,11 @@ TexelDirections::TexelDirections(int level) : m_level(level) {
                 widest = std::max(widest, std::acos(std::clamp(glm::dot(c, k), -1.0, 1.0)));
             }
         }
+    for (const glm::vec3& d : m_sub) {
+        m_subX.push_back(d.x);
+        m_subY.push_back(d.y);
+        m_subZ.push_back(d.z);
+    }
     m_texelSolidAngle = 4.0 * std::numbers::pi / double(m_dirs.size());
     m_texelRadius = widest * 1.01 + 1e-6;
 }

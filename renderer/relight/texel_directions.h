@@ -30,6 +30,11 @@ public:
     // kSub x kSub stratified directions inside texel t (for averaging a narrow BRDF lobe over it).
     static constexpr int kSub = 4;
     const glm::vec3* subDirections(size_t texel) const { return &m_sub[texel * kSub * kSub]; }
+    // The same directions' x, y and z components, kSub^2 floats each (what a vectorised frame
+    // change reads: relight/texel_values.cpp).
+    const float* subX(size_t texel) const { return &m_subX[texel * kSub * kSub]; }
+    const float* subY(size_t texel) const { return &m_subY[texel * kSub * kSub]; }
+    const float* subZ(size_t texel) const { return &m_subZ[texel * kSub * kSub]; }
     // The texel holding direction d (any non-zero vector).
     uint32_t texelOf(const glm::vec3& d) const;
     // The same for a unit vector, inline: a rect light's drag maps ~30 samples per point through
@@ -40,6 +45,7 @@ private:
     int m_level;
     std::vector<glm::vec3> m_dirs;
     std::vector<glm::vec3> m_sub;
+    std::vector<float> m_subX, m_subY, m_subZ;
     double m_texelSolidAngle;
     double m_texelRadius;
 };

@@ -38,6 +38,21 @@ inline glm::vec3 toLocal(const util::Frame& f, const glm::vec3& w) {
                      f.n.x * w.x + f.n.y * w.y + f.n.z * w.z);
 }
 
+constexpr int kSubCount = TexelDirections::kSub * TexelDirections::kSub;
+
+// toLocal of one texel's kSub^2 sub-directions into the batch's arrays: lane by lane the same
+// products and sums as toLocal (no FMA without -march), written so the compiler vectorises them
+// (restrict parameters; §7.0f: restrict on local pointers is ignored).
+void subDirectionsToLocal(const util::Frame& f, const float* __restrict sx, const float* __restrict sy,
+                          const float* __restrict sz, float* __restrict x, float* __restrict y,
+                          float* __restrict z) {
+    for (int k = 0; k < kSubCount; ++k) {
+        x[k] = f.t.x * sx[k] + f.t.y * sy[k] + f.t.z * sz[k];
+        y[k] = f.b.x * sx[k] + f.b.y * sy[k] + f.b.z * sz[k];
+        z[k] = f.n.x * sx[k] + f.n.y * sy[k] + f.n.z * sz[k];
+    }
+}
+
 struct Channels {
     std::vector<float> r, g, b;
     plugins::BrdfValues values(size_t n) {
@@ -48,6 +63,70 @@ struct Channels {
     }
     glm::vec3 at(size_t i) const { return glm::vec3(r[i], g[i], b[i]); }
 };
+
+// products[i] = f[i] x z[i] where z[i] > 0, else +0 (vectorised; the same products as f x cosine
+// one by one).
+void maskedCosineProducts(size_t n, const float* __restrict f, const float* __restrict z,
+                          float* __restrict products) {
+    for (size_t i = 0; i < n; ++i) products[i] = z[i] > 0.0f ? f[i] * z[i] : 0.0f;
+}
+
+// The grey-affine values (ResolvedMaterial::oneEval: f(white) in red, f(black) in green), the
+// same floats as the general loop in visibleTexelValues: a centre's f x cosine, or a narrow
+// texel's sum, in direction order, of f x cosine over its directions above the horizon (+0 for the
+// others, which leaves the non-negative sum as it is) over kSub^2 — one channel of each. The
+// products first (vectorised), then the narrow texels' sums four texels at a time: each sum is
+// still one chain of additions in order, but four independent chains overlap (one chain alone
+// waited on each addition: a sixth of this function).
+void greyValues(const uint32_t* first, size_t texels, const float* z, const Channels& f, TexelValues& out) {
+    thread_local std::vector<float> white, black;
+    thread_local std::vector<uint32_t> narrow;
+    const size_t n = first[texels];
+    white.resize(n);
+    black.resize(n);
+    maskedCosineProducts(n, f.r.data(), z, white.data());
+    maskedCosineProducts(n, f.g.data(), z, black.data());
+    narrow.clear();
+    for (size_t j = 0; j < texels; ++j) {
+        const size_t begin = first[j];
+        if (first[j + 1] - begin != 1) {
+            narrow.push_back(uint32_t(j));
+            continue;
+        }
+        out.white[j] = glm::vec3(f.r[begin] * z[begin]);
+        out.black[j] = glm::vec3(f.g[begin] * z[begin]);
+    }
+    constexpr float kInv = 1.0f / float(kSubCount); // a power of two: the same as dividing
+    size_t g = 0;
+    for (; g + 4 <= narrow.size(); g += 4) {
+        const float* w[4];
+        const float* b[4];
+        for (int l = 0; l < 4; ++l) {
+            w[l] = &white[first[narrow[g + size_t(l)]]];
+            b[l] = &black[first[narrow[g + size_t(l)]]];
+        }
+        float sw[4] = {0.0f, 0.0f, 0.0f, 0.0f}, sb[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (int k = 0; k < kSubCount; ++k)
+            for (int l = 0; l < 4; ++l) {
+                sw[l] += w[l][k];
+                sb[l] += b[l][k];
+            }
+        for (int l = 0; l < 4; ++l) {
+            out.white[narrow[g + size_t(l)]] = glm::vec3(sw[l] * kInv);
+            out.black[narrow[g + size_t(l)]] = glm::vec3(sb[l] * kInv);
+        }
+    }
+    for (; g < narrow.size(); ++g) {
+        const size_t begin = first[narrow[g]];
+        float sw = 0.0f, sb = 0.0f;
+        for (int k = 0; k < kSubCount; ++k) {
+            sw += white[begin + size_t(k)];
+            sb += black[begin + size_t(k)];
+        }
+        out.white[narrow[g]] = glm::vec3(sw * kInv);
+        out.black[narrow[g]] = glm::vec3(sb * kInv);
+    }
+}
 
 } // namespace
 
@@ -69,8 +148,10 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
         dirs.first[texels++] = uint32_t(dirs.size);
         const glm::vec3 local = toLocal(frame, ctx.dirs->direction(t));
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
-            const glm::vec3* sub = ctx.dirs->subDirections(t);
-            for (int k = 0; k < kCount; ++k) dirs.push(toLocal(frame, sub[k]));
+            const size_t at = dirs.size;
+            subDirectionsToLocal(frame, ctx.dirs->subX(t), ctx.dirs->subY(t), ctx.dirs->subZ(t), &dirs.x[at],
+                                 &dirs.y[at], &dirs.z[at]);
+            dirs.size += kCount;
         } else {
             dirs.push(local);
         }
@@ -88,6 +169,10 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
     auto black = [&](size_t i) { return one ? glm::vec3(f.g[i]) : two ? f0.at(i) : glm::vec3(0.0f); };
     out.white.resize(texels);
     out.black.resize(withBlack ? texels : 0);
+    if (one) {
+        greyValues(dirs.first.data(), texels, dirs.z.data(), f, out);
+        return;
+    }
     for (size_t j = 0; j < texels; ++j) {
         const size_t begin = dirs.first[j], end = dirs.first[j + 1];
         if (end - begin == 1) {
