@@ -67,6 +67,14 @@ TEST(EnvProductTables, MirrorLobesOfTwoToFourEnvTexelsTakeMisTechnique) {
     const ProductPolicy chrome = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.1f}, env);
     EXPECT_NE(chrome.reason.find("4 env texels"), std::string::npos) << chrome.reason;
     EXPECT_EQ(MaterialProductTables::build(env, chrome).bytes(), 0u);
+    // A constant env (level 4, texels 0.22 rad that are no detail of its light) is exempt: a lobe
+    // of 3 such texels (ggx r = 0.58, a 1.34 sr lobe within 16x of the env's 4 pi) keeps its product.
+    scene::Environment flat;
+    flat.image = std::make_shared<util::ImageRGB>(8, 4, glm::vec3(1.0f));
+    const SamplerEnvironment constant = SamplerEnvironment::build(flat);
+    ASSERT_EQ(constant.level(), 4);
+    const float r3 = float(std::sqrt(3.0 * std::sqrt(4.0 * 3.141592653589793) / 16.0 / 2.0));
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), r3}, constant).mode, ProductMode::Product);
 }
 
 // The extents rule (kEnvMisSolidAngleRatio), for mirror lobes: the product only where env and
