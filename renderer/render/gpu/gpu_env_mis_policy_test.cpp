@@ -34,6 +34,21 @@ std::shared_ptr<scene::Scene> lambertUnderSky(double sunRatio) {
 
 std::shared_ptr<scene::Scene> lambertUnderSun() { return lambertUnderSky(1e5); }
 
+// A ggx r = 0.1 sphere (glossy_sun's chrome) under a 512 x 256 sky whose sun holds the light: the
+// lobe is 2.9 env texels wide, EnvMis (env_product_tables.cpp, kMinProductLobeInEnvTexels).
+std::shared_ptr<scene::Scene> chromeUnderSun() {
+    scene::Material m;
+    m.id = 1;
+    m.name = "chrome";
+    m.brdf = "ggx";
+    m.roughness = 0.1f;
+    m.baseColor = glm::vec3(0.95f);
+    auto s = makeFurnaceScene(m, glm::vec3(1.0f), 32, 16);
+    s->lighting.environment =
+        makeSunSkyEnvironment(512, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e5);
+    return s;
+}
+
 util::ImageRGB render(const std::shared_ptr<scene::Scene>& scene, SamplerKind kind, DeviceChoice device) {
     RenderOptions o;
     o.width = 24;
@@ -78,6 +93,26 @@ TEST(WaveletEnvMisPolicy, AllEnvMisSceneRendersAsMisOnTheCpu) {
 
 TEST(WaveletEnvMisPolicy, AllEnvMisSceneRendersAsMisOnVulkanWithoutTheProductCode) {
     const auto scene = lambertUnderSun();
+    expectSame(render(scene, SamplerKind::Wavelet, DeviceChoice::Vulkan),
+               render(scene, SamplerKind::Mis, DeviceChoice::Vulkan));
+}
+
+// A mirror lobe 2-4 env texels wide under a sun (glossy_sun's chrome) renders as `mis`, and its
+// kernel has no product code (docs/performance.md "Sun-lit fireflies of the wavelet sampler").
+TEST(WaveletEnvMisPolicy, ChromeUnderASunRendersAsMisOnTheCpu) {
+    const auto scene = chromeUnderSun();
+    const scene::Material& chrome = scene->materials.front();
+    ASSERT_EQ(chooseProductPolicy(*plugins::findBrdf("ggx"),
+                                  plugins::BrdfParams(chrome.baseColor, chrome.roughness),
+                                  SamplerEnvironment::build(scene->lighting.environment))
+                  .mode,
+              ProductMode::EnvMis);
+    expectSame(render(scene, SamplerKind::Wavelet, DeviceChoice::Cpu),
+               render(scene, SamplerKind::Mis, DeviceChoice::Cpu));
+}
+
+TEST(WaveletEnvMisPolicy, ChromeUnderASunRendersAsMisOnVulkan) {
+    const auto scene = chromeUnderSun();
     expectSame(render(scene, SamplerKind::Wavelet, DeviceChoice::Vulkan),
                render(scene, SamplerKind::Mis, DeviceChoice::Vulkan));
 }

@@ -294,11 +294,12 @@ TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
     scene::Material mat;
     mat.id = 1;
     mat.brdf = "ggx";
-    // Both roughnesses in product mode (the 32 x 16 map's texels are 0.11 rad: r = 0.3 would be
-    // BsdfLobe, r <= 0.4 too), and a bright texel keeps the env's effective solid angle within
-    // 16x of the lobes (not EnvMis): a kernel whose scene draws from no product is compiled
-    // without the code, and the edit to a product would then recreate the tracer instead.
-    mat.roughness = 0.45f;
+    // Both roughnesses in product mode (the 32 x 16 map's texels are 0.11 rad: r <= 0.33 would be
+    // BsdfLobe, lobes of 2-4 texels, r < 0.47, EnvMis), and a bright texel keeps the env's
+    // effective solid angle within 16x of the lobes (not EnvMis): a kernel whose scene draws from
+    // no product is compiled without the code, and the edit to a product would then recreate the
+    // tracer instead.
+    mat.roughness = 0.5f;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 24, 12);
     auto env = gradientEnvironment();
     env->at(5, 3) = glm::vec3(1e4f);

@@ -20,7 +20,7 @@ scene::Scene glossyScene() {
     scene::Material ggx;
     ggx.name = "glossy";
     ggx.brdf = "ggx";
-    ggx.roughness = 0.3f;
+    ggx.roughness = 0.35f;
     scene::Scene s = *makeFurnaceScene(ggx, glm::vec3(1.0f), 32, 16);
     s.lighting.environment = makeSunSkyEnvironment(64, glm::vec3(0.3f, 0.8f, 0.5f), 200.0);
     return s;

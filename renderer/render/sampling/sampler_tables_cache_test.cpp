@@ -22,13 +22,14 @@ namespace {
 // Indices of the test scene's materials (and the default one, unused) in Scene::materials order.
 constexpr size_t kGgx = 0, kLambert = 1, kDefault = 2;
 
-// Two spheres: a GGX one (roughness 0.3, where the product policy builds windowed bins) and a
+// Two spheres: a GGX one (roughness 0.35, where the product policy builds windowed bins: its lobe
+// is 4.4 env texels wide, over the 4 below which the policy takes mis's technique) and a
 // Lambert one, under a 64 x 32 sky with a sun (env level 6: a small but lit map).
 scene::Scene testScene() {
     scene::Material ggx;
     ggx.name = "glossy";
     ggx.brdf = "ggx";
-    ggx.roughness = 0.3f;
+    ggx.roughness = 0.35f;
     ggx.baseColor = glm::vec3(0.9f, 0.7f, 0.5f);
     scene::Scene s = *makeFurnaceScene(ggx, glm::vec3(1.0f), 32, 16);
     scene::Material lambert;

@@ -53,6 +53,14 @@ constexpr int kRefineMaxLevels = 3;
 // A lobe narrower than this many env texels sees an environment constant across it: BSDF
 // sampling is then near-ideal, and a product cannot resolve more than the env does.
 constexpr double kMinLobeInEnvTexels = 2.0; // 1.0 measured 2.5x worse than mis at r = 0.05, N = 10
+// A lobe of kMinLobeInEnvTexels..kMinProductLobeInEnvTexels env texels: the product (16^2 leaves
+// on the GPU, each about a lobe half-width, refined by BRDF x cos at one point per child) does not
+// resolve the lobe against a sun of a few texels better than mis's technique does, so it cannot pay
+// for its pass (2.5x mis's): the vertex takes mis's technique (EnvMis). Measured on glossy_sun
+// (chrome r = 0.1 under the city sun, 2.9 texels at N = 9; docs/performance.md "Sun-lit fireflies
+// of the wavelet sampler"): per sample within 10% of mis (12 seeds), also at the pixel centre's
+// own hit and with the product's NEE alone; r = 0.2 there (11.6 texels) wins 2x per sample.
+constexpr double kMinProductLobeInEnvTexels = 4.0;
 
 double envTexelAngle(const SamplerEnvironment& env) {
     return std::sqrt(4.0 * kPi) * std::ldexp(1.0, -env.level());
@@ -127,6 +135,21 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
                       "lobe half-width %.4f rad < env texel %.4f rad: the env is constant across "
                       "the lobe, so the BSDF samples the lobe and env sampling the rest",
                       p.lobeHalfWidth, texel);
+        p.reason = why;
+        return p;
+    }
+    // A uniform env (a constant one: 4 pi sr, at the octahedral map's minimum level, whose texels
+    // are no detail of the light) is exempt: its product is the lobe itself, which the refinement
+    // resolves (the furnace's ggx r = 0.6, 3.25 such texels: 1% at 44 passes, mis's estimator
+    // needs ~750).
+    const bool uniformEnv = env.effectiveSolidAngle() >= 4.0 * kPi * (1.0 - 1e-6);
+    if (!uniformEnv && p.lobeHalfWidth < kMinProductLobeInEnvTexels * texel) {
+        p.mode = ProductMode::EnvMis;
+        std::snprintf(why, sizeof why,
+                      "lobe half-width %.4f rad < %g env texels (%.4f rad): a product at this "
+                      "resolution samples the lobe no better than mis's env NEE, so the vertex "
+                      "uses it (no per-hit product)",
+                      p.lobeHalfWidth, kMinProductLobeInEnvTexels, texel);
         p.reason = why;
         return p;
     }

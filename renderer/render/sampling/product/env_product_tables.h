@@ -33,7 +33,8 @@ namespace wavelit::render {
 // Product: the lobe is sampled by the wavelet product over a window. BsdfLobe: the lobe is
 // narrower than the env resolves, so the BSDF sampler samples it (env sampling still takes the
 // tail's share, see DirectionSampler).
-// EnvMis: the lobe is hemisphere-wide (Lambert), or env and mirror lobe are of very different
+// EnvMis: the lobe is hemisphere-wide (Lambert), only 2-4 env texels wide (a product at that
+// resolution does no better than mis), or env and mirror lobe are of very different
 // extent (kEnvMisSolidAngleRatio): the material's vertices use `mis`'s technique (env NEE by the exact env technique, MIS against the BSDF
 // continuation; vertexSamplerKind) and no product tables are built.
 enum class ProductMode { Product, BsdfLobe, EnvMis };

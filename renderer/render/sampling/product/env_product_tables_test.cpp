@@ -43,6 +43,40 @@ TEST(EnvProductTables, PolicyFollowsLobeWidth) {
               ProductMode::BsdfLobe);
 }
 
+// Mirror lobes by their width in env texels (texel = sqrt(4 pi) 2^-level, the octahedral map's):
+// under 2 texels BsdfLobe, from 2 to 4 EnvMis (the product resolves the lobe no better than mis's
+// technique: glossy_sun's chrome, docs/performance.md "Sun-lit fireflies of the wavelet sampler"),
+// from 4 the product. ggx's half-width is 2 r^2; a 512 x 256 sun map has level 9 like the city
+// map (texel 0.00692 rad), where the city's chrome (r = 0.1: 2.9 texels) takes mis's technique
+// and r = 0.2 (11.6 texels) keeps its product.
+TEST(EnvProductTables, MirrorLobesOfTwoToFourEnvTexelsTakeMisTechnique) {
+    const SamplerEnvironment env = SamplerEnvironment::build(
+        makeSunSkyEnvironment(512, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e6));
+    ASSERT_EQ(env.level(), 9);
+    const double texel = std::sqrt(4.0 * 3.141592653589793) / 512.0;
+    const plugins::Brdf* ggx = plugins::findBrdf("ggx");
+    // The roughness whose half-width is `texels` env texels.
+    auto roughness = [&](double texels) { return float(std::sqrt(texels * texel / 2.0)); };
+    auto mode = [&](float r) { return chooseProductPolicy(*ggx, {glm::vec3(0.9f), r}, env).mode; };
+    EXPECT_EQ(mode(roughness(1.95)), ProductMode::BsdfLobe);
+    EXPECT_EQ(mode(roughness(2.05)), ProductMode::EnvMis);
+    EXPECT_EQ(mode(0.1f), ProductMode::EnvMis);
+    EXPECT_EQ(mode(roughness(3.95)), ProductMode::EnvMis);
+    EXPECT_EQ(mode(roughness(4.05)), ProductMode::Product);
+    EXPECT_EQ(mode(0.2f), ProductMode::Product);
+    const ProductPolicy chrome = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.1f}, env);
+    EXPECT_NE(chrome.reason.find("4 env texels"), std::string::npos) << chrome.reason;
+    EXPECT_EQ(MaterialProductTables::build(env, chrome).bytes(), 0u);
+    // A constant env (level 4, texels 0.22 rad that are no detail of its light) is exempt: a lobe
+    // of 3 such texels (ggx r = 0.58, a 1.34 sr lobe within 16x of the env's 4 pi) keeps its product.
+    scene::Environment flat;
+    flat.image = std::make_shared<util::ImageRGB>(8, 4, glm::vec3(1.0f));
+    const SamplerEnvironment constant = SamplerEnvironment::build(flat);
+    ASSERT_EQ(constant.level(), 4);
+    const float r3 = float(std::sqrt(3.0 * std::sqrt(4.0 * 3.141592653589793) / 16.0 / 2.0));
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), r3}, constant).mode, ProductMode::Product);
+}
+
 // The extents rule (kEnvMisSolidAngleRatio), for mirror lobes: the product only where env and
 // lobe are of comparable extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is
 // left to BSDF sampling (EnvMis). A sun holding the light: the mirror lobe keeps its product.
