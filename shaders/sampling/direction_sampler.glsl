@@ -119,25 +119,6 @@ double dsBsdfLobeMoment(DirSampler s, SamplerGlobals g) {
 #ifdef WAVELIT_PRODUCT_SAMPLER
 // The wavelet's product for a hit: the window and env factor of the axis's bin.
 float dsSetupWavelet(inout DirSampler s, SamplerMaterial sm, vec3 axisLocal, int envLevel) {
-    if (sm.precomputedBins > 0u) {
-        // The axis bin's precomputed pyramid and window (render/gpu/precomputed_products.h), at
-        // every view: no per-hit product.
-        int bins = int(sm.precomputedBins);
-        vec2 q = octToSquare(axisLocal);
-        int bx = min(int(q.x * float(bins)), bins - 1), by = min(int(q.y * float(bins)), bins - 1);
-        s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
-        // Bins of an even stride (header, pyramid, one pad word) from an odd precomputedOffset
-        // (precomputedBinWords): (ox, oy) and the pyramid's sibling pairs are 8-byte aligned.
-        int binWords = (WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS + pyramidOffset(s.m + 1) + 1) & ~1;
-        uint at = sm.precomputedOffset + uint((by * bins + bx) * binWords);
-        s.k = int(samplerWords[at]);
-        ivec2 oxy = ivec2(unpackUint2x32(samplerWords64[(at + 1u) >> 1u]));
-        s.ox = oxy.x;
-        s.oy = oxy.y;
-        s.massOffset = int(at) + WAVELIT_PRECOMPUTED_BIN_HEADER_WORDS;
-        s.refineLevels = dsRefineLevels(sm, s.k + s.m, envLevel);
-        return dsMass(s, 0);
-    }
     uint factor;
     flatBinOf(sm, axisLocal, s.k, s.ox, s.oy, factor);
     s.m = min(int(flatHeader(sm, WAVELIT_FLAT_PRODUCT_LEVEL)), WAVELIT_MAX_PRODUCT_LEVEL);
@@ -225,11 +206,7 @@ DirSampler dsSetupWith(bool withProduct, SamplerGlobals g, SamplerMaterial sm, F
         }
     }
     if (!product) lobeMoment = dsBsdfLobeMoment(s, g);
-    // A precomputed bin carries its canonical lobe's tail moment in its header's last word
-    // (binTailMoment, render/gpu/precomputed_products.h): 4^TAIL_LEVEL BRDF evaluations saved.
-    double tail = product && s.massOffset >= 0
-                      ? double(uintBitsToFloat(samplerWords[uint(s.massOffset - 1)])) * double(g.envMean)
-                      : dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
+    double tail = dsTailMoment(s, g, product, axisLocal, sm.capHalfAngle);
     double a = sqrt(max(tail, 0.0LF)), bm = sqrt(max(lobeMoment, 0.0LF));
     double minEnvShare = sm.mode == kModeOracle ? WAVELIT_ORACLE_MIN_ENV_SHARE : WAVELIT_WAVELET_MIN_ENV_SHARE;
     double envShare = clamp(a / max(a + bm, 1e-300LF), minEnvShare, WAVELIT_MAX_ENV_SHARE);

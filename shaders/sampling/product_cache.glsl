@@ -16,7 +16,7 @@
 // Buffer (uint words): [0, pixels) the word offset of each pixel's entry (kNoCacheEntry: none,
 // its centre hit no such material on the CPU's trace), padded to an even count, then the entries:
 // a header of WAVELIT_PRODUCT_CACHE_HEADER_WORDS words (material, shares, window, normal, wo) and,
-// for a per-hit product (no precomputed bin), a pad word and its pyramid's pyramidOffset(m + 1)
+// for a per-hit product, a pad word and its pyramid's pyramidOffset(m + 1)
 // masses.
 #ifndef WAVELIT_PRODUCT_CACHE_GLSL
 #define WAVELIT_PRODUCT_CACHE_GLSL

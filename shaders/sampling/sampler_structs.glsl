@@ -23,9 +23,6 @@ struct SamplerMaterial {
     float mixBsdf, capHalfAngle;
     uint aroundNormal, refineMaxLevels;
     float refineCellAngle;
-    uint precomputedOffset; // word offset of the axis bins' pyramids (precomputed_products.h)
-    uint precomputedBins;   // axis bins per side; 0: none (the product is built per hit)
-    uint pad0;
 };
 
 // One shading point's mixture (DirectionSampler's state).
@@ -33,7 +30,7 @@ struct DirSampler {
     float cProduct, cBsdf, cEnv, cUniform, cCosine; // mixture weights (sum 1)
     int k, ox, oy, m;                               // product window and level
     int refineLevels;                               // lobe refinement levels below the leaves
-    int massOffset; // word offset of a precomputed pyramid in samplerWords; -1: the private one; <= -2: the pixel's cached one
+    int massOffset; // -1: the private pyramid; <= -2: the pixel's cached one (product_cache.glsl)
     Frame frame;
     vec3 wo; // shading-local
     uint brdfType;

@@ -1,14 +1,11 @@
 #include "render/gpu/gpu_sampler_data.h"
 
-#include "render/gpu/precomputed_products.h"
-
 #include "render/sampling/oracle_sampler.h"
 #include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_constants.h"
 
 #include <algorithm>
 #include <bit>
-#include <numbers>
 #include <string>
 
 namespace wavelit::render {
@@ -19,21 +16,6 @@ size_t GpuSamplerData::bytes() const {
 }
 
 namespace {
-
-// Which hits read the precomputed per-axis-bin pyramids (precomputed_products.h): those of a lobe
-// about the normal as wide as the hemisphere (Lambert's, policy.lobeHalfWidth = pi/2), the only
-// lobe whose shape does not move with the view, so the canonical lobe (seen at normal incidence)
-// is the hit's own. Every other lobe builds its product per hit: at the study's 45-degree view
-// the tables were up to 4000x worse than the per-hit product (docs/brdfs.md, last section):
-// a mirror lobe seen at 45 degrees is compressed by cos 45 across the plane of incidence and
-// its axis is up to half an axis bin off the bin's centre, and a measured table's glossy lobe
-// about the normal sits at the mirror direction, not at the normal. Since round 5
-// (docs/performance.md "Equal time, round 5") chooseProductPolicy makes every hemisphere-wide
-// lobe EnvMis, so no material reaches this in product mode: the pyramids are unused until the
-// policy gives such a lobe a product again.
-bool readsPrecomputedPyramids(const ProductPolicy& policy) {
-    return policy.aroundNormal && policy.lobeHalfWidth >= 0.5 * std::numbers::pi - 1e-9;
-}
 
 // The oracle needs no tables: its material entry says how to fit and mix the per-hit product.
 GpuSamplerMaterial oracleMaterial(const SamplerMaterial& m) {
@@ -135,19 +117,8 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
             g.scalingOffset = uint32_t(d.words.size());
             for (float s : flat.scaling)
                 d.words.push_back(std::bit_cast<uint32_t>(s));
-            const bool readTables = readsPrecomputedPyramids(policy);
-            if (!readTables && !policy.aroundNormal && policy.capHalfAngle < kGpuNarrowLobeCap)
+            if (!policy.aroundNormal && policy.capHalfAngle < kGpuNarrowLobeCap)
                 g.mixBsdf = float(std::max(policy.mixBsdf, kGpuNarrowLobeMixBsdf));
-            if (d.lit && readTables) {
-                const int m = std::min(policy.productLevel, kGpuMaxProductLevel);
-                const std::vector<uint32_t> bins =
-                    buildPrecomputedProducts(env, t.material(size_t(index)), m, *product);
-                if (d.words.size() % 2 == 0)
-                    d.words.push_back(0); // odd: the pyramids' sibling pairs 8-byte aligned
-                g.precomputedOffset = uint32_t(d.words.size());
-                g.precomputedBins = 1u << axisBinLevel(*product);
-                d.words.insert(d.words.end(), bins.begin(), bins.end());
-            }
         }
         padToEven(d.words); // the exact tables after the (even count of) tail words: 8-byte aligned
         d.tailOffset = uint32_t(d.words.size());

@@ -15,8 +15,6 @@
 //              each guide is padded to an even word count, the buffer to an even length): the
 //              shaders read doubles and word pairs through a u64 view of the buffer, one load for
 //              two words on lavapipe (docs/performance.md "Lavapipe throughput (issue 12)").
-//              A `wavelet` material in product mode also has its axis bins' precomputed product
-//              pyramids there (precomputed_products.h), after its flat tables.
 // The constants below reach the shaders as #defines (sampler_shader_defines.h).
 #pragma once
 
@@ -71,11 +69,8 @@ struct GpuSamplerMaterial {
     uint32_t aroundNormal = 0;  // 1: the product's axis is the normal (Lambert)
     uint32_t refineMaxLevels = 0;   // lobe refinement below the product's leaves (the policy's)
     float refineCellAngle = 0.0f;   // radians; 0: none
-    uint32_t precomputedOffset = 0; // word offset of its axis bins' pyramids
-    uint32_t precomputedBins = 0;   // axis bins per side (precomputed_products.h); 0: none
-    uint32_t pad = 0;
 };
-static_assert(sizeof(GpuSamplerMaterial) == 48);
+static_assert(sizeof(GpuSamplerMaterial) == 36);
 static_assert(sizeof(wavelet::HierarchicalSampler::TableNode) == 16);
 
 struct GpuSamplerData {

@@ -4,9 +4,7 @@
 // A 7 x 5 map: odd height and odd texel count, so both guides need their padding word. The flat
 // product tables likewise: each material's header at an odd word, so its bin and factor word pairs
 // and its nodes' (detail 2, detail 3) and child pairs are on 8-byte boundaries for the u64 reads of
-// env_product_tables.glsl, holding flatten()'s words. (The
-// precomputed pyramids' alignment has no test: since round 5 of the EnvMis policy no material
-// reaches them; docs/performance.md "Equal time, round 5".)
+// env_product_tables.glsl, holding flatten()'s words.
 #include "render/gpu/gpu_sampler_data.h"
 
 #include "plugins/brdf_table.h"

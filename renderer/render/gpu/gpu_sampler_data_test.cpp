@@ -1,9 +1,7 @@
-// Which `wavelet` materials the Vulkan tracer lets read the precomputed axis-bin pyramids, and
-// which get the larger defensive BSDF share (gpu_sampler_data.h), decided from the lobe traits
-// alone: only a lobe about the normal as wide as the hemisphere (Lambert) could read the
-// pyramids, and since round 5 (docs/performance.md) such a lobe is EnvMis under every env, so
-// none does; mirror lobes and a measured table's lobe build their product per hit; a mirror lobe whose cap
-// is under kGpuNarrowLobeCap gets kGpuNarrowLobeMixBsdf, the others the policy's share. The
+// Which `wavelet` materials get the larger defensive BSDF share (gpu_sampler_data.h), decided from
+// the lobe traits alone: a Lambert lobe is EnvMis under every env since round 5
+// (docs/performance.md); mirror lobes and a measured table's lobe build their product per hit; a
+// mirror lobe whose cap is under kGpuNarrowLobeCap gets kGpuNarrowLobeMixBsdf, the others the policy's share. The
 // variance figures behind the rule are in docs/brdfs.md ("The Vulkan `wavelet` on these plugins").
 #include "render/gpu/gpu_sampler_data.h"
 
@@ -59,7 +57,6 @@ TEST(GpuSamplerData, ProductLobesBuildTheirProductPerHitWithThePolicysShare) {
         const GpuSamplerMaterial& g = packed->materials[i];
         SCOPED_TRACE(cases[i].material.name);
         ASSERT_EQ(g.mode, kGpuSamplerProduct);
-        EXPECT_EQ(g.precomputedBins, 0u);
         EXPECT_FLOAT_EQ(g.mixBsdf, float(cases[i].mixBsdf));
     }
 }
@@ -88,7 +85,6 @@ TEST(GpuSamplerData, ALambertLobeIsPackedEnvMisUnderASunAndUnderASoftMap) {
         auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, 1);
         ASSERT_TRUE(packed.ok()) << packed.error().message();
         EXPECT_EQ(packed->materials[0].mode, kGpuSamplerEnvMis);
-        EXPECT_EQ(packed->materials[0].precomputedBins, 0u);
     }
 }
 

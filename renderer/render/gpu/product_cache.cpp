@@ -46,7 +46,7 @@ GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const sce
                 const GpuSamplerMaterial& sm = samplerMaterials[m];
                 if (sm.mode != kGpuSamplerProduct && sm.mode != kGpuSamplerBsdfLobe)
                     continue;
-                const bool pyramid = sm.mode == kGpuSamplerProduct && sm.precomputedBins == 0;
+                const bool pyramid = sm.mode == kGpuSamplerProduct;
                 sizes[size_t(y) * size_t(width) + size_t(x)] =
                     pyramid ? pyramidEntryWords : GpuProductCacheLayout::kHeaderWords;
             }

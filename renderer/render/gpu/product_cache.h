@@ -4,7 +4,7 @@
 // on the CPU BVH, has a material whose `wavelet` policy forms a product: mode Product or
 // BsdfLobe) and where each entry starts; the first pass after a reset fills the entries on the
 // device, later passes read them. Only those pixels take memory: a header of kHeaderWords words,
-// and for a per-hit product (a material without precomputed axis bins) one pad word and its
+// and for a per-hit product (mode Product) one pad word and its
 // pyramid's (4^(m+1) - 1) / 3 floats, m = kGpuMaxProductLevel (341 floats, 1464 bytes an entry in
 // all). The shader reads and writes entries through the buffer's u64 view (two words a load on
 // lavapipe, docs/performance.md "The product cache and product tables through u64 views"), so:

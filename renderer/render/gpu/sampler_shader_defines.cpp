@@ -1,7 +1,6 @@
 #include "render/gpu/sampler_shader_defines.h"
 
 #include "render/gpu/gpu_sampler_data.h"
-#include "render/gpu/precomputed_products.h"
 #include "render/gpu/product_cache.h"
 #include "render/sampling/product/flat_product_layout.h"
 #include "render/sampling/sampler_constants.h"
@@ -65,7 +64,6 @@ std::vector<std::string> samplerShaderDefines() {
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
         define("MIS_ENV_ROULETTE", floatLiteral(kMisEnvRoulette)),
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
-        define("PRECOMPUTED_BIN_HEADER_WORDS", kPrecomputedBinHeaderWords),
         define("PRODUCT_CACHE_HEADER_WORDS", int(GpuProductCacheLayout::kHeaderWords)),
         define("PRODUCT_CACHE_PYRAMID_AT", int(GpuProductCacheLayout::kPyramidAt)),
         define("WAVELET_MIN_ENV_SHARE", doubleLiteral(kWaveletMinEnvShare)),

@@ -30,10 +30,9 @@ int gNode[((1 << (2 * WAVELIT_MAX_PRODUCT_LEVEL)) - 1) / 3];
 // kMassInProductCache - massOffset (sampling/product_cache.glsl).
 const int kMassInProductCache = -2;
 
-// Cell i of the hit's pyramid: a normal bin's precomputed one (dsSetupWavelet), the pixel's
-// cached one (the camera vertex, product_cache.glsl) or the private one.
+// Cell i of the hit's pyramid: the pixel's cached one (the camera vertex, product_cache.glsl) or
+// the private one.
 float dsMass(DirSampler s, int i) {
-    if (s.massOffset >= 0) return uintBitsToFloat(samplerWords[uint(s.massOffset + i)]);
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
     if (s.massOffset <= kMassInProductCache) {
         // Through the u64 view, as the entry was written (product_cache.glsl).
@@ -182,19 +181,10 @@ void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
     int side = 1 << (l + 1), off = pyramidOffset(l + 1);
     int c0 = off + 2 * y * side + 2 * x, c1 = c0 + side;
     double a, b, c, d;
-    if (s.massOffset >= 0) {
-        // A precomputed pyramid: siblings c0, c0 + 1 (and c1, c1 + 1) share an 8-byte aligned
-        // u64 (precomputed_products.h precomputedBinWords): one load each pair, not two.
-        vec2 ab = uintBitsToFloat(unpackUint2x32(samplerWords64[uint(s.massOffset + c0) >> 1u]));
-        vec2 cd = uintBitsToFloat(unpackUint2x32(samplerWords64[uint(s.massOffset + c1) >> 1u]));
-        a = ab.x;
-        b = ab.y;
-        c = cd.x;
-        d = cd.y;
-    }
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
-    else if (s.massOffset <= kMassInProductCache) {
-        // The pixel's cached pyramid: it starts at an odd word too (product_cache.h kPyramidAt).
+    if (s.massOffset <= kMassInProductCache) {
+        // The pixel's cached pyramid starts at an odd word (product_cache.h kPyramidAt): siblings
+        // c0, c0 + 1 (and c1, c1 + 1) share an 8-byte aligned u64, one load each pair.
         uint at = uint(kMassInProductCache - s.massOffset);
         vec2 ab = uintBitsToFloat(unpackUint2x32(productCache64[(at + uint(c0)) >> 1u]));
         vec2 cd = uintBitsToFloat(unpackUint2x32(productCache64[(at + uint(c1)) >> 1u]));
@@ -202,9 +192,9 @@ void dsChildProbabilities(DirSampler s, int l, int x, int y, out double pRow[2],
         b = ab.y;
         c = cd.x;
         d = cd.y;
-    }
+    } else
 #endif
-    else {
+    {
         a = dsMass(s, c0);
         b = dsMass(s, c0 + 1);
         c = dsMass(s, c1);
