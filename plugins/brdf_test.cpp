@@ -21,6 +21,8 @@
 #include <optional>
 #include <string>
 
+#include <unistd.h>
+
 namespace wavelit::plugins {
 namespace {
 
@@ -75,7 +77,11 @@ std::shared_ptr<const BrdfTable> sharpTable() {
     static const std::shared_ptr<const BrdfTable> kTable = [] {
         const std::vector<char> bytes =
             tabulateMerlBrdf(*findBrdf("glossy"), BrdfParams(glm::vec3(0.9f), 0.2f), 90, 64, 32);
-        const std::string path = ::testing::TempDir() + "wavelit_brdf_test_sharp.binary";
+        // One name per process: ctest -j runs each case as its own process, and two of them
+        // writing, reading and removing one shared path read each other's half-written file
+        // (a table of zeros: WhiteAlbedoAtMostOne failed with albedo 0 in a CI run).
+        const std::string path = ::testing::TempDir() + "wavelit_brdf_test_sharp_" +
+                                 std::to_string(::getpid()) + ".binary";
         std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
         auto t = loadMerlBrdf(path);
         std::remove(path.c_str());

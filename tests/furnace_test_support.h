@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace wavelit::furnace_test {
 
 // The acceptance bound: within 1% of the analytic value.
@@ -112,7 +114,9 @@ private:
 inline std::shared_ptr<const plugins::BrdfTable> glossyTable(float r) {
     const std::vector<char> bytes = plugins::tabulateMerlBrdf(
         *plugins::findBrdf("glossy"), plugins::BrdfParams(glm::vec3(1.0f), r), 24, 64, 32);
-    const std::string path = ::testing::TempDir() + "wavelit_furnace_glossy_table.binary";
+    // One name per process (ctest -j runs test processes side by side; a shared path races).
+    const std::string path = ::testing::TempDir() + "wavelit_furnace_glossy_table_" +
+                             std::to_string(::getpid()) + ".binary";
     std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
     auto table = plugins::loadMerlBrdf(path);
     std::remove(path.c_str());

@@ -8,6 +8,7 @@
 // or light edit stays a K-term update.
 #include "relight/relight_preview.h"
 
+#include "relight/edit_rules.h"
 #include "relight/light_projection.h"
 #include "relight/parallel_for.h"
 #include "relight/texel_values.h"
@@ -16,26 +17,6 @@
 #include <string_view>
 
 namespace wavelit::relight {
-namespace {
-
-template <class Entity> size_t indexOf(const std::vector<Entity>& list, scene::EntityId id) {
-    for (size_t i = 0; i < list.size(); ++i)
-        if (list[i].id == id) return i;
-    return list.size();
-}
-
-// applyChanges' rule (relight_edits.cpp): every edit of `ref` is one of `scalers`.
-bool onlyScales(const scene::ChangeSet& changes, scene::EntityRef ref,
-                std::initializer_list<std::string_view> scalers) {
-    for (const scene::Edit& e : changes.edits()) {
-        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
-        if (!edit || edit->entity != ref) continue;
-        if (std::find(scalers.begin(), scalers.end(), edit->property) == scalers.end()) return false;
-    }
-    return true;
-}
-
-} // namespace
 
 std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirstAnswer(
     const scene::Scene& edited, const scene::ChangeSet& changes, bool wideLobesOnly) const {

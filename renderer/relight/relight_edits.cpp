@@ -2,6 +2,7 @@
 // (relight_preview.h lists the cases; architecture.md §5.A).
 #include "relight/relight_preview.h"
 
+#include "relight/edit_rules.h"
 #include "relight/parallel_for.h"
 #include "util/timer.h"
 
@@ -13,12 +14,6 @@
 
 namespace wavelit::relight {
 namespace {
-
-template <class Entity> size_t indexOf(const std::vector<Entity>& list, scene::EntityId id) {
-    for (size_t i = 0; i < list.size(); ++i)
-        if (list[i].id == id) return i;
-    return list.size();
-}
 
 bool structural(const scene::Scene& a, const scene::Scene& b, const scene::ChangeSet& changes) {
     if (a.objects.size() != b.objects.size() || a.materials.size() != b.materials.size() ||
@@ -33,19 +28,6 @@ bool anyOverlap(const TexelBits& a, const TexelBits& b) {
     for (size_t w = 0; w < a.size(); ++w)
         if (a[w] | b[w]) return true;
     return false;
-}
-
-// True when every edit of `ref` in the change set is one of `scalers` (a light's intensity and
-// colour, the environment's intensity and tint): the terms are cached per unit power
-// (environment_factor.h, light_projection.h), so nothing per point changes.
-bool onlyScales(const scene::ChangeSet& changes, scene::EntityRef ref,
-                std::initializer_list<std::string_view> scalers) {
-    for (const scene::Edit& e : changes.edits()) {
-        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
-        if (!edit || edit->entity != ref) continue;
-        if (std::find(scalers.begin(), scalers.end(), edit->property) == scalers.end()) return false;
-    }
-    return true;
 }
 
 // Whether a shadow ray from `origin` toward light k can pass through `sphere`: their bounding
