@@ -59,7 +59,9 @@ constexpr double kMinLobeInEnvTexels = 2.0; // 1.0 measured 2.5x worse than mis 
 // for its pass (2.5x mis's): the vertex takes mis's technique (EnvMis). Measured on glossy_sun
 // (chrome r = 0.1 under the city sun, 2.9 texels at N = 9; docs/performance.md "Sun-lit fireflies
 // of the wavelet sampler"): per sample within 10% of mis (12 seeds), also at the pixel centre's
-// own hit and with the product's NEE alone; r = 0.2 there (11.6 texels) wins 2x per sample.
+// own hit and with the product's NEE alone. r = 0.2 under that sun (11.6 texels) won 2x per
+// sample before the env technique's inverse CDF; since then glossy_r02_sun only ties mis per
+// sample (docs/performance.md "Session measurements after the u64 product cache ...").
 constexpr double kMinProductLobeInEnvTexels = 4.0;
 
 double envTexelAngle(const SamplerEnvironment& env) {
