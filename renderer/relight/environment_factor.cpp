@@ -1,5 +1,6 @@
 #include "relight/environment_factor.h"
 
+#include "relight/texel_directions.h"
 #include "wavelet/equirect_resample.h"
 #include "wavelet/haar.h"
 #include "wavelet/sphere_map.h"
@@ -98,6 +99,16 @@ glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& di
     const int px = fx > 0.0f ? std::min(int(fx), w - 1) : 0;
     const int py = fy > 0.0f ? std::min(int(fy), h - 1) : 0;
     return env.image->at(px, py);
+}
+
+std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs) {
+    std::vector<glm::vec3> out(dirs.count(), glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c) {
+        if (env.coefficients[size_t(c)].size() != out.size()) continue; // no environment: zero
+        const wavelet::SquareGrid grid = wavelet::inverseHaar(wavelet::HaarImage{env.level, env.coefficients[size_t(c)]});
+        for (size_t t = 0; t < out.size(); ++t) out[t][c] = float(grid.values[t] * dirs.texelSolidAngle());
+    }
+    return out;
 }
 
 } // namespace wavelit::relight

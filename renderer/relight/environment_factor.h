@@ -44,4 +44,10 @@ glm::vec3 environmentScale(const scene::Environment& env);
 // pixels of the preview.
 glm::vec3 environmentRadiance(const scene::Environment& env, const glm::vec3& dir);
 
+class TexelDirections;
+// L(t) dOmega per texel of `dirs` per unit environmentScale(): the inverse Haar transform of the
+// factor, times the texel's solid angle (zero everywhere without an environment). What the
+// material edit's first answer sums against (point_transfer.h untruncatedTerms).
+std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs);
+
 } // namespace wavelit::relight

@@ -4,13 +4,13 @@
 #include "relight/texel_values.h"
 #include "relight/transfer_compression.h"
 #include "util/hemisphere_sampling.h"
-#include "wavelet/haar.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 namespace wavelit::relight {
 namespace {
@@ -40,10 +40,10 @@ glm::vec3 unshadowed(const TransferContext& ctx, const PreviewPoint& p, const ut
     const glm::vec3 local = frame.toLocal(wi);
     if (m.narrow && glm::dot(local, glm::vec3(-wo.x, -wo.y, wo.z)) >= m.cosCap) {
         constexpr int kCount = TexelDirections::kSub * TexelDirections::kSub;
-        const glm::vec3* sub = ctx.dirs->subDirections(texel);
+        const float *sx = ctx.dirs->subX(texel), *sy = ctx.dirs->subY(texel), *sz = ctx.dirs->subZ(texel);
         glm::vec3 sum(0.0f), sum0(0.0f);
         for (int k = 0; k < kCount; ++k) {
-            const glm::vec3 l = frame.toLocal(sub[k]);
+            const glm::vec3 l = frame.toLocal(glm::vec3(sx[k], sy[k], sz[k]));
             if (l.z > 0.0f) {
                 glm::vec3 f0(0.0f);
                 sum += evalPair(m, params, black, wo, l, f0) * l.z;
@@ -65,8 +65,8 @@ bool visible(const PointState& s, size_t texel) { return testBit(s.lit, texel) &
 // order, with its contribution to <T, L_k> (black only when `black`): lightTermWith's sum term by
 // term, and the shadow field's per-entry cache (drag_cache.h).
 // `texelValue(texel, blackOut)`: f x cosine at a visible texel (unshadowed's value; the
-// material's first answer has them from its batch already).
-template <class Visit, class TexelValue>
+// material's first answer has them from its batch already); nullptr: unshadowed at every texel.
+template <class TexelValue, class Visit>
 void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                            const scene::Light& light, bool black, TexelValue&& texelValue, Visit&& visit) {
     const ResolvedMaterial& m = materialOf(ctx, p);
@@ -95,34 +95,23 @@ void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, co
             continue;
         }
         glm::vec3 f0(0.0f);
-        const glm::vec3 value = visible(s, e.texel) ? texelValue(e.texel, &f0)
-                                                    : unshadowed(ctx, p, frame, wo, e.texel, m.params,
-                                                                 black ? &m.black : nullptr, &f0);
+        glm::vec3 value;
+        if constexpr (!std::is_null_pointer_v<std::remove_cvref_t<TexelValue>>) {
+            if (visible(s, e.texel)) value = texelValue(e.texel, &f0);
+            else value = unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0);
+        } else {
+            value = unshadowed(ctx, p, frame, wo, e.texel, m.params, black ? &m.black : nullptr, &f0);
+        }
         const glm::vec3 w = value * e.weight;
         visit(e, w, black ? f0 * e.weight : glm::vec3(0.0f));
     }
-}
-
-// forEachSeenLightEntry with unshadowed at every texel.
-template <class Visit>
-void forEachSeenLightEntry(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                           const scene::Light& light, bool black, Visit&& visit) {
-    const ResolvedMaterial& m = materialOf(ctx, p);
-    const util::Frame frame = util::Frame::fromNormal(p.shading);
-    const glm::vec3 wo = frame.toLocal(p.wo);
-    forEachSeenLightEntry(
-        ctx, p, s, light, black,
-        [&](size_t texel, glm::vec3* f0) {
-            return unshadowed(ctx, p, frame, wo, texel, m.params, black ? &m.black : nullptr, f0);
-        },
-        visit);
 }
 
 // <T, L_k> for the primary parameters, and for black when `black` is given.
 glm::vec3 lightTermWith(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                         const scene::Light& light, glm::vec3* black) {
     glm::vec3 sum(0.0f), sum0(0.0f);
-    forEachSeenLightEntry(ctx, p, s, light, black != nullptr,
+    forEachSeenLightEntry(ctx, p, s, light, black != nullptr, nullptr,
                           [&](const TexelWeight&, const glm::vec3& w, const glm::vec3& b) {
                               sum += w;
                               sum0 += b;
@@ -277,49 +266,6 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
     for (size_t k = 0; k < ctx.scene->lighting.lights.size(); ++k) updateLightTerms(ctx, p, s, k);
 }
 
-namespace {
-
-// PointState and PointTerms alike (the same sums in the same order).
-template <class Terms>
-glm::vec3 mixWith(const ResolvedMaterial& m, const Terms& s, const glm::vec3& envScale,
-                  const std::vector<glm::vec3>& lightPowers) {
-    glm::vec3 white = s.envTerm * envScale;
-    for (size_t k = 0; k < s.lightTerms.size(); ++k) white += s.lightTerms[k] * lightPowers[k];
-    switch (m.colourUse) {
-    case ColourUse::Linear: return m.baseColor * white;
-    case ColourUse::Affine: {
-        glm::vec3 black = s.envTerm0 * envScale;
-        for (size_t k = 0; k < s.lightTerms0.size(); ++k) black += s.lightTerms0[k] * lightPowers[k];
-        return black + m.baseColor * (white - black);
-    }
-    case ColourUse::Fixed:
-    case ColourUse::Ignored: break;
-    }
-    return white;
-}
-
-} // namespace
-
-glm::vec3 mixTerms(const ResolvedMaterial& m, const PointState& s, const glm::vec3& envScale,
-                   const std::vector<glm::vec3>& lightPowers) {
-    return mixWith(m, s, envScale, lightPowers);
-}
-
-glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::vec3& envScale,
-                   const std::vector<glm::vec3>& lightPowers) {
-    return mixWith(m, t, envScale, lightPowers);
-}
-
-std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs) {
-    std::vector<glm::vec3> out(dirs.count(), glm::vec3(0.0f));
-    for (int c = 0; c < 3; ++c) {
-        if (env.coefficients[size_t(c)].size() != out.size()) continue; // no environment: zero
-        const wavelet::SquareGrid grid = wavelet::inverseHaar(wavelet::HaarImage{env.level, env.coefficients[size_t(c)]});
-        for (size_t t = 0; t < out.size(); ++t) out[t][c] = float(grid.values[t] * dirs.texelSolidAngle());
-    }
-    return out;
-}
-
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                       const std::vector<glm::vec3>& envTexels, PointTerms& out) {
     thread_local TexelValues values;
@@ -405,7 +351,7 @@ void seenLightContributions(const TransferContext& ctx, const PreviewPoint& p, c
                             const scene::Light& light, std::vector<LightContribution>& out) {
     out.clear();
     const bool affine = materialOf(ctx, p).colourUse == ColourUse::Affine;
-    forEachSeenLightEntry(ctx, p, s, light, affine,
+    forEachSeenLightEntry(ctx, p, s, light, affine, nullptr,
                           [&](const TexelWeight& e, const glm::vec3& w, const glm::vec3& b) {
                               out.push_back(LightContribution{e.texel, e.distance, e.direction, w, b});
                           });

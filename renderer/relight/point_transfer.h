@@ -141,11 +141,11 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::ve
 // term as the texel sum of f x cosine x visibility x L(t) dOmega over the visible texels — by
 // Parseval 4 pi <T, L> with every Haar coefficient kept, so no transform and no top K — and each
 // light term as lightTerm computes it (never from T). `envTexels`: L(t) dOmega per texel per unit
-// environmentScale(), the inverse Haar transform of the environment factor (envTexelValues).
+// environmentScale(), the inverse Haar transform of the environment factor (environment_factor.h
+// envTexelValues).
 // Reads s's visibility only, so s may hold T of another material.
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                       const std::vector<glm::vec3>& envTexels, PointTerms& out);
-std::vector<glm::vec3> envTexelValues(const EnvironmentFactor& env, const TexelDirections& dirs);
 
 // T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
 // values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF

@@ -14,28 +14,30 @@ TexelDirections::TexelDirections(int level) : m_level(level) {
     const wavelet::OctahedralMap map;
     const int n = side();
     m_dirs.resize(size_t(n) * size_t(n));
-    m_sub.resize(m_dirs.size() * kSub * kSub);
+    m_subX.resize(m_dirs.size() * kSub * kSub);
+    m_subY.resize(m_subX.size());
+    m_subZ.resize(m_subX.size());
     double widest = 0.0;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const glm::dvec3 c = map.toDirection(0, {(x + 0.5) / n, (y + 0.5) / n});
             m_dirs[size_t(y) * size_t(n) + size_t(x)] = glm::vec3(c);
-            glm::vec3* sub = &m_sub[(size_t(y) * size_t(n) + size_t(x)) * kSub * kSub];
+            const size_t first = (size_t(y) * size_t(n) + size_t(x)) * kSub * kSub;
             for (int j = 0; j < kSub; ++j)
-                for (int i = 0; i < kSub; ++i)
-                    sub[j * kSub + i] = glm::vec3(map.toDirection(
+                for (int i = 0; i < kSub; ++i) {
+                    const glm::vec3 d(map.toDirection(
                         0, {(x + (i + 0.5) / kSub) / n, (y + (j + 0.5) / kSub) / n}));
+                    const size_t at = first + size_t(j * kSub + i);
+                    m_subX[at] = d.x;
+                    m_subY[at] = d.y;
+                    m_subZ[at] = d.z;
+                }
             for (int corner = 0; corner < 4; ++corner) {
                 const glm::dvec3 k =
                     map.toDirection(0, {double(x + (corner & 1)) / n, double(y + (corner >> 1)) / n});
                 widest = std::max(widest, std::acos(std::clamp(glm::dot(c, k), -1.0, 1.0)));
             }
         }
-    for (const glm::vec3& d : m_sub) {
-        m_subX.push_back(d.x);
-        m_subY.push_back(d.y);
-        m_subZ.push_back(d.z);
-    }
     m_texelSolidAngle = 4.0 * std::numbers::pi / double(m_dirs.size());
     m_texelRadius = widest * 1.01 + 1e-6;
 }

@@ -27,11 +27,10 @@ public:
     // Half the largest angle between a texel's centre and its corners (radians), padded: a cone
     // test against centre directions widened by it never misses a texel the cone touches.
     double texelRadius() const { return m_texelRadius; }
-    // kSub x kSub stratified directions inside texel t (for averaging a narrow BRDF lobe over it).
+    // kSub x kSub stratified directions inside texel t (for averaging a narrow BRDF lobe over it),
+    // as their x, y and z components, kSub^2 floats each (what a vectorised frame change reads:
+    // relight/texel_values.cpp).
     static constexpr int kSub = 4;
-    const glm::vec3* subDirections(size_t texel) const { return &m_sub[texel * kSub * kSub]; }
-    // The same directions' x, y and z components, kSub^2 floats each (what a vectorised frame
-    // change reads: relight/texel_values.cpp).
     const float* subX(size_t texel) const { return &m_subX[texel * kSub * kSub]; }
     const float* subY(size_t texel) const { return &m_subY[texel * kSub * kSub]; }
     const float* subZ(size_t texel) const { return &m_subZ[texel * kSub * kSub]; }
@@ -44,7 +43,6 @@ public:
 private:
     int m_level;
     std::vector<glm::vec3> m_dirs;
-    std::vector<glm::vec3> m_sub;
     std::vector<float> m_subX, m_subY, m_subZ;
     double m_texelSolidAngle;
     double m_texelRadius;
