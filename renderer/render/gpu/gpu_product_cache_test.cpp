@@ -2,10 +2,12 @@
 // "Wavelet pass cost, round 4"; shaders/sampling/product_cache.glsl, product_cache.h). Built in
 // the first pass after a reset from the pixel centre's hit and drawn from by later passes, it
 // must (1) keep the estimator unbiased — the cached-product render's mean equals `bsdf`'s per
-// block, on the Vulkan tracer and on its CPU twin, which rebuilds the same centre-hit mixture per
-// path — and (2) be rebuilt after any scene or camera change: the image after setScene equals bit
-// for bit a fresh tracer's on the edited scene.
+// block, on the Vulkan tracer and on its CPU twin, which caches the same pixels' centre-hit
+// mixtures (cpu_camera_nee.cpp), and the two agree with each other — and (2) be rebuilt after
+// any scene or camera change: the image after setScene equals bit for bit a fresh tracer's on
+// the edited scene.
 #include "render/gpu/gpu_path_tracer_impl.h"
+#include "render/reference/cpu_path_tracer.h"
 #include "render/sampling/product/env_product_tables.h"
 #include "render/testing/block_statistics.h"
 #include "render/testing/cpu_analytic_scenes.h"
@@ -114,11 +116,18 @@ TEST(GpuProductCache, CachedProductRenderMeanEqualsBsdfPerBlock) {
     const BlockStatistics gpuStats = blockStatistics(*gpu, 96);
     const BlockStatistics cpuStats = blockStatistics(*cpu, 96);
     expectSameMeans(gpuStats, reference, "vulkan wavelet (cached) vs bsdf");
-    expectSameMeans(cpuStats, reference, "cpu wavelet (centre-hit twin) vs bsdf");
+    expectSameMeans(cpuStats, reference, "cpu wavelet (cached twin) vs bsdf");
+    // Both caches' estimators against each other, block by block (the CPU twin caches the same
+    // pixels' centre-hit mixtures: cpu_camera_nee.cpp).
+    expectSameMeans(cpuStats, gpuStats, "cpu wavelet (cached) vs vulkan wavelet (cached)");
     EXPECT_EQ(gpu->validationMessageCount(), 0);
     auto* tracer = dynamic_cast<gpu_tracer::GpuPathTracer*>(gpu.get());
     ASSERT_NE(tracer, nullptr);
     EXPECT_EQ(tracer->productCacheBuilds(), 1u) << "built once, read by the other 95 passes";
+    auto* cpuTracer = dynamic_cast<CpuPathTracer*>(cpu.get());
+    ASSERT_NE(cpuTracer, nullptr);
+    EXPECT_EQ(cpuTracer->productCacheBuilds(), 1u) << "built once, read by the other 95 passes";
+    EXPECT_GT(cpuTracer->productCacheEntries(), 0u);
 }
 
 TEST(GpuProductCache, RebuiltAfterASceneOrCameraChange) {

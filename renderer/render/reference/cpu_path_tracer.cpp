@@ -266,7 +266,11 @@ util::Status CpuPathTracer::renderPass() {
     std::atomic<int> next{0};
     const size_t pixels = m_sum.size();
     const size_t groupCount = m_groupSum.empty() ? 0 : m_groups.size();
-    // Workers write disjoint pixels of m_sum (and of each group's layer): no locking.
+    // `wavelet`: the first pass after a reset lays out the camera-vertex product cache and builds
+    // each entry in its pixel's tile, just before the pixel's path (cpu_camera_nee.cpp).
+    const bool buildCache = !m_cameraNeeReady && layoutCameraNeeCache();
+    // Workers write disjoint pixels of m_sum (and of each group's layer, and of the cache): no
+    // locking.
     auto worker = [&] {
         std::vector<glm::vec3> groups(groupCount);
         glm::vec3* splat = groupCount ? groups.data() : nullptr;
@@ -275,6 +279,8 @@ util::Status CpuPathTracer::renderPass() {
             for (int y = y0; y < std::min(y0 + kTileSize, h); ++y)
                 for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
                     const size_t p = size_t(y) * size_t(w) + size_t(x);
+                    if (buildCache && m_cameraNeeIndex[p] != kNoCameraNee)
+                        m_cameraNee[m_cameraNeeIndex[p]] = buildCameraNeeEntry(x, y);
                     m_sum[p] += glm::dvec3(samplePixel(x, y, pass, nullptr, splat));
                     for (size_t g = 0; g < groupCount; ++g)
                         m_groupSum[g * pixels + p] += glm::dvec3(groups[g]);
@@ -287,6 +293,7 @@ util::Status CpuPathTracer::renderPass() {
     for (int i = 1; i < n; ++i) threads.emplace_back(worker);
     worker(); // the calling thread is worker 0
     for (std::thread& t : threads) t.join();
+    m_cameraNeeReady = true; // built, or not used by this render
     ++m_passes;
     m_timings.passSeconds += timer.seconds();
     return util::okStatus();
@@ -319,6 +326,11 @@ void CpuPathTracer::resetAccumulation() {
     std::fill(m_groupSum.begin(), m_groupSum.end(), glm::dvec3(0.0));
     m_passes = 0;
     m_timings.passSeconds = 0.0;
+    // Every scene, camera or option change resets: the cached camera-vertex products (built for
+    // the old scene's tables and centre hits) are dropped and rebuilt by the next pass.
+    m_cameraNeeReady = false;
+    m_cameraNeeIndex.clear();
+    m_cameraNee.clear();
 }
 
 std::string CpuPathTracer::deviceName() const {

@@ -17,6 +17,8 @@
 // architecture.md §5). sampleScatter/scatterPdf are the one
 // place that draws the next direction and the one pdf the MIS weights of analytic lights use, so
 // a light hit by a sampled direction is weighted with the pdf of the sampler actually used.
+// `wavelet`'s camera-vertex mixture is cached per pixel across passes, as in the Vulkan tracer
+// (cpu_camera_nee.cpp): built in the first pass after a reset, dropped by every reset.
 // Not thread-safe as an object (driven by one thread); renderPass uses workers internally.
 // samplePixel (one path, term for term) is in cpu_path_tracer_path.cpp, the rest in
 // cpu_path_tracer.cpp.
@@ -91,6 +93,15 @@ public:
     util::Result<std::vector<util::ImageRGB>> groupImages() override;
 
     int threadCount() const { return m_threadCount; }
+    // `wavelet`'s per-pixel camera-vertex product cache: how often it was laid out and built
+    // (once per reset), its entries, and those its memory budget left out (their pixels use
+    // `mis`'s technique at the camera vertex, as the Vulkan tracer's do). Tests and the report.
+    uint64_t productCacheBuilds() const { return m_cameraNeeBuilds; }
+    size_t productCacheEntries() const { return m_cameraNee.size(); }
+    uint64_t productCacheSkipped() const { return m_cameraNeeSkipped; }
+    // Test hook: the cache's memory budget in bytes (default 0: a quarter of physical memory);
+    // applies from the next reset.
+    void setProductCacheBudget(uint64_t bytes) { m_cameraNeeBudget = bytes; }
     // The direction sampler's report (env resolution, per-material choices); empty for `bsdf`.
     std::string samplerReport() const;
 
@@ -158,14 +169,26 @@ private:
                            std::vector<PathEvent>* events, int vertex,
                            const glm::vec3& beta) const;
 
-    // `wavelet`'s env NEE technique at a path's camera vertex (depth 0) of pixel (x, y), into
-    // `ds` (cpu_camera_nee.cpp): for a material whose policy forms a product (Product,
-    // BsdfLobe), the mixture built at the pixel CENTRE's hit when that hit has the same
-    // material, else `mis`'s (the env alone); other materials as at any vertex. The Vulkan
-    // tracer caches that mixture per pixel across passes (shaders/sampling/product_cache.glsl);
-    // this twin rebuilds it per path, the same estimator.
-    void cameraNeeSampler(std::optional<DirectionSampler>& ds, int x, int y,
-                          const ResolvedMaterial& mat, const ShadingPoint& here) const;
+    // `wavelet`'s env NEE technique at a path's camera vertex (depth 0) of pixel (x, y)
+    // (cpu_camera_nee.cpp): for a material whose policy forms a product (Product, BsdfLobe), the
+    // mixture built at the pixel CENTRE's hit when that hit has the same material, else `mis`'s
+    // (the env alone); other materials as at any vertex. Returns the sampler to use: the pixel's
+    // cached entry (built in the first pass after a reset, as the Vulkan tracer's
+    // product_cache.glsl) or one built into `own`.
+    const DirectionSampler* cameraNeeSampler(std::optional<DirectionSampler>& own, int x, int y,
+                                             const ResolvedMaterial& mat,
+                                             const ShadingPoint& here) const;
+    // A pixel's camera-vertex product cache entry: the centre hit's material and, when that
+    // material forms a product, the mixture built there.
+    struct CameraNeeEntry {
+        const ResolvedMaterial* material = nullptr;
+        std::optional<DirectionSampler> sampler;
+    };
+    CameraNeeEntry buildCameraNeeEntry(int x, int y) const;
+    bool formsCameraProduct(const ResolvedMaterial& mat) const;
+    // Before the first pass after a reset: which pixels get an entry (product_cache_pixels.h);
+    // false when the render uses no cache (not `wavelet`, or a black environment).
+    bool layoutCameraNeeCache();
 
     std::shared_ptr<const scene::Scene> m_scene;
     std::shared_ptr<const scene::Bvh> m_bvh;
@@ -185,6 +208,17 @@ private:
     LightGroups m_groups;
     std::vector<glm::dvec3> m_groupSum;
     int m_passes = 0;
+    // `wavelet`'s per-pixel camera-vertex product cache (cpu_camera_nee.cpp; the Vulkan tracer's
+    // twin is render/gpu/product_cache.h): each pixel's index into m_cameraNee (kNoCameraNee:
+    // none), laid out and built in the first pass after a reset, read by the later ones. Entries
+    // only for pixels whose centre hit forms a product; a worker fills only its tile's pixels.
+    static constexpr uint32_t kNoCameraNee = 0xFFFFFFFFu;
+    std::vector<uint32_t> m_cameraNeeIndex;
+    std::vector<CameraNeeEntry> m_cameraNee;
+    bool m_cameraNeeReady = false; // m_cameraNee holds the current scene's entries
+    uint64_t m_cameraNeeBuilds = 0;
+    uint64_t m_cameraNeeSkipped = 0;
+    uint64_t m_cameraNeeBudget = 0; // bytes; 0: a quarter of the machine's memory
     IntegratorTimings m_timings;
     UpdateCounts m_lastUpdate;
 };

@@ -42,7 +42,10 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
     const bool lit = m_samplerTables && m_samplerTables->environment().hasLight();
     // The env NEE technique of the vertex that drew `dir` (issue 20), kept so that env light the
     // continuation finds is MIS-weighted against it; empty: that vertex did no env NEE.
-    std::optional<DirectionSampler> neeOfDir;
+    // (A pointer: the camera vertex's may be the pixel's cached entry; a sampler built for the
+    // path lives in neeStorage.)
+    std::optional<DirectionSampler> neeStorage;
+    const DirectionSampler* neeOfDir = nullptr;
     // LightMix: each term below is also added to its emitter's group (docs/estimator.md "Light
     // groups"), the same float value that is added to L.
     if (groups) std::fill(groups, groups + m_groups.size(), glm::vec3(0.0f));
@@ -128,17 +131,20 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         // pdf weights the analytic lights); for env/mis/wavelet/oracle it is the env NEE
         // technique (only over an env with light) and the continuation is the plugin's BSDF
         // sample. `bsdf`: none.
-        std::optional<DirectionSampler> ds;
+        std::optional<DirectionSampler> own;
+        const DirectionSampler* ds = nullptr;
         if (m_samplerTables && mat.samplerIndex >= 0 &&
             (continuationFromSampler(kind) || (envNee && lit))) {
             const ShadingPoint here{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)};
-            if (kind == SamplerKind::Wavelet && depth == 0)
-                cameraNeeSampler(ds, x, y, mat, here);
-            else
-                ds.emplace(*m_samplerTables, vertexSamplerKind(kind, depth), here);
+            if (kind == SamplerKind::Wavelet && depth == 0) {
+                ds = cameraNeeSampler(own, x, y, mat, here);
+            } else {
+                own.emplace(*m_samplerTables, vertexSamplerKind(kind, depth), here);
+                ds = &*own;
+            }
         }
-        const DirectionSampler* sampler = ds && continuationFromSampler(kind) ? &*ds : nullptr;
-        const DirectionSampler* neeSampler = ds && envNee ? &*ds : nullptr;
+        const DirectionSampler* sampler = ds && continuationFromSampler(kind) ? ds : nullptr;
+        const DirectionSampler* neeSampler = ds && envNee ? ds : nullptr;
 
         // Lights are sampled from the point the continuation ray leaves from, so both MIS
         // strategies evaluate their pdfs at the same point.
@@ -215,10 +221,12 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             beta /= 1.0f - q;
         }
         if (vertex) vertex->throughputOut = beta;
-        if (neeSampler)
-            neeOfDir = std::move(ds);
-        else
-            neeOfDir.reset();
+        if (neeSampler && own && ds == &*own) {
+            neeStorage = std::move(own);
+            neeOfDir = &*neeStorage;
+        } else {
+            neeOfDir = neeSampler; // a cached entry, or none
+        }
 
         origin = next;
         dir = wi;
