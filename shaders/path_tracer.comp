@@ -35,7 +35,8 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
     vec4 lightInfo;    // x = light selection probability 1/n (computed on the CPU, as LightSet)
     uvec4 samplerInfo; // sampler kind code, env lit (0/1), word offset of the 8^2 env averages,
                        // env map level N
-    vec4 samplerEnv;   // x = the sampler env map's mean luminance
+    vec4 samplerEnv;   // x = the sampler env map's mean luminance, y = `mis`'s shadow-ray roulette
+                       // constant c (misEnvRoulette, from the env's effective solid angle)
 } params;
 
 layout(push_constant) uniform Pass {

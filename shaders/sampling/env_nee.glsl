@@ -5,7 +5,7 @@
 // - an env-only technique (mis, env, wavelet past its product vertices) draws its texel and reads
 //   the pdf and the radiance at the ONE texel of the drawn float direction: the same numbers as
 //   dsSample + envRadiance, one equirect lookup (two atans) instead of two;
-// - `mis` plays Russian roulette with the shadow ray (WAVELIT_MIS_ENV_ROULETTE), and so do `wavelet`'s
+// - `mis` plays Russian roulette with the shadow ray (params.samplerEnv.y), and so do `wavelet`'s
 //   env-only vertices (past its product vertices, EnvMis materials): their NEE is `mis`'s.
 #ifndef WAVELIT_ENV_NEE_GLSL
 #define WAVELIT_ENV_NEE_GLSL
@@ -22,7 +22,8 @@ vec3 envTexelRadiance(uvec2 t) {
 // continuation (unweighted: the `env` sampler, weight 1). envTechniqueOnly: ds is the env
 // technique alone (DirectionSampler::envTechniqueOnly on the CPU).
 // roulette (`mis`): the shadow ray is traced with probability p = min(1, max(beta f) cos w / c),
-// c = WAVELIT_MIS_ENV_ROULETTE, and its term divided by p. With the env technique's pdf
+// c = params.samplerEnv.y, and its term divided by p (c: sampler_constants.h misEnvRoulette, from
+// the env's effective solid angle, a property of its shape). With the env technique's pdf
 // proportional to luminance x solid angle, Le / pdf has the luminance of the env's integral, so
 // max(beta f) cos w is the unoccluded term over that integral (up to the texel's chroma): p
 // depends on no light's, tint's or env's intensity, and every path's estimate stays linear in
@@ -54,7 +55,7 @@ vec3 envNextEvent(DirSampler ds, bool envTechniqueOnly, bool roulette, vec3 beta
     float scale = wi.z * w / pdf;
     if (roulette) {
         vec3 bf = beta * f;
-        float p = max(bf.r, max(bf.g, bf.b)) * wi.z * w / float(WAVELIT_MIS_ENV_ROULETTE);
+        float p = max(bf.r, max(bf.g, bf.b)) * wi.z * w / params.samplerEnv.y;
         if (p < 1.0) {
             if (!(u3 < p)) return vec3(0.0);
             scale /= p;

@@ -153,6 +153,7 @@ private:
     // What the uploaded sampler buffers need in the params block (GpuParams::samplerInfo/Env).
     uint32_t m_samplerInfo[4] = {0, 0, 0, 0};
     float m_samplerEnvMean = 0.0f;
+    float m_samplerEnvRoulette = 0.0f;
     // LightMix layers (RenderOptions::lightGroups only; gpu_path_tracer_groups.cpp).
     vk::Buffer m_groupInfo, m_groupLayers;
     uint32_t m_groupBinding = 0; // the info's binding; the layers' is the next

@@ -5,6 +5,10 @@
 #include "render/gpu/gpu_path_tracer.h"
 #include "render/session/integrator_factory.h"
 #include "render/session/render_session.h"
+#include "render/sampling/direction_sampler_tables.h"
+#include "render/sampling/sampler_constants.h"
+#include "render/sampling/sampler_environment.h"
+#include "render/testing/sampler_test_envs.h"
 #include "scene/bvh.h"
 
 #include <gtest/gtest.h>
@@ -177,21 +181,15 @@ TEST(GpuPathTracer, InsideAnEmissiveDiffuseSphereRadianceIsTheGeometricSeries) {
     EXPECT_EQ(gpu->validationMessageCount(), 0);
 }
 
-TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
-    // Glossy sphere on GI (4 bounces, roulette) in an env image: both tracers draw the same
-    // numbers per pixel and pass, so images agree pixel by pixel up to float rounding; a few
-    // paths may diverge where rounding flips a branch, so a small fraction may differ.
+// Glossy sphere on a Lambert ground (4 bounces, roulette) in an env image.
+std::shared_ptr<scene::Scene> glossySphereOnGround(std::shared_ptr<const util::ImageRGB> env) {
     scene::Material mat;
     mat.id = 1;
     mat.brdf = "ggx";
     mat.baseColor = glm::vec3(0.9f, 0.6f, 0.3f);
     mat.roughness = 0.3f;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 48, 24);
-    auto env = gradientEnvironment();
-    // A one-texel sun 10^5 x the sky: the tabulated samplers' draws land on it, where a pdf
-    // evaluated in the wrong texel would show as a firefly.
-    env->at(20, 4) = glm::vec3(1e5f);
-    scene->lighting.environment.image = env;
+    scene->lighting.environment.image = std::move(env);
     scene->lighting.environment.rotationDeg = 30.0f;
     scene::Material floor;
     floor.id = 2;
@@ -203,39 +201,68 @@ TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
     ground.materialId = 2;
     ground.transform.translation = glm::vec3(0.0f, -2.0f, 0.0f);
     scene->objects.push_back(ground);
+    return scene;
+}
 
+// Both tracers draw the same numbers per pixel and pass, so images agree pixel by pixel up to
+// float rounding; a few paths may diverge where rounding flips a branch, so a small fraction may
+// differ. rouletteConstant (optional) receives the `mis` roulette constant of the scene's env.
+void expectGpuMatchesCpu(const std::shared_ptr<scene::Scene>& scene, SamplerKind kind,
+                         float* rouletteConstant = nullptr) {
+    RenderOptions options = testOptions(4);
+    options.sampler = kind;
+    auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
+    auto gpu = createGpuPathTracer(scene, bvh, options);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    auto cpu = createCpuPathTracer(scene, bvh, options);
+    ASSERT_TRUE(cpu.ok()) << cpu.error().message();
+    if (rouletteConstant && (*cpu)->samplerTables())
+        *rouletteConstant =
+            misEnvRoulette((*cpu)->samplerTables()->environment().effectiveSolidAngle());
+    constexpr int kPasses = 4;
+    util::ImageRGB g = renderPasses(**gpu, kPasses), c = renderPasses(**cpu, kPasses);
+    ASSERT_TRUE(allFinite(g));
+    // Relative agreement per pixel: float rounding differs between LLVM and the C++ compiler.
+    constexpr float kPixelTolerance = 1e-3f;
+    int differing = 0;
+    for (size_t i = 0; i < g.pixels.size(); ++i) {
+        glm::vec3 d = glm::abs(g.pixels[i] - c.pixels[i]);
+        float scale = std::max(1e-3f, util::luminance(c.pixels[i]));
+        if (std::max(d.r, std::max(d.g, d.b)) > kPixelTolerance * scale + 1e-5f)
+            ++differing;
+    }
+    double gm = meanLuminance(g), cm = meanLuminance(c);
+    std::printf("cpu vs gpu, sampler %s: mean %.5f vs %.5f, %d of %zu pixels differ\n",
+                samplerKindName(kind), cm, gm, differing, g.pixels.size());
+    // Diverged paths: a few percent at most (rounding flips roulette or a grazing test).
+    EXPECT_LT(differing, int(g.pixels.size() / 20)) << samplerKindName(kind);
+    EXPECT_NEAR(gm, cm, 0.02 * cm) << samplerKindName(kind);
+    EXPECT_EQ((*gpu)->validationMessageCount(), 0);
+}
+
+TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
+    auto env = gradientEnvironment();
+    // A one-texel sun 10^5 x the sky: the tabulated samplers' draws land on it, where a pdf
+    // evaluated in the wrong texel would show as a firefly.
+    env->at(20, 4) = glm::vec3(1e5f);
+    auto scene = glossySphereOnGround(env);
     // Every sampler whose GPU form draws as its CPU form does (the same techniques from the same
     // numbers; `wavelet` and `oracle` build their products differently on the GPU and are judged
     // statistically in gpu_product_sampler_test.cpp and gpu_sampler_unbiased_test.cpp).
     for (SamplerKind kind : {SamplerKind::Bsdf, SamplerKind::Uniform, SamplerKind::Cosine,
-                             SamplerKind::Env, SamplerKind::Mis}) {
-        RenderOptions options = testOptions(4);
-        options.sampler = kind;
-        auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-        auto gpu = createGpuPathTracer(scene, bvh, options);
-        ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-        auto cpu = createCpuPathTracer(scene, bvh, options);
-        ASSERT_TRUE(cpu.ok()) << cpu.error().message();
-        constexpr int kPasses = 4;
-        util::ImageRGB g = renderPasses(**gpu, kPasses), c = renderPasses(**cpu, kPasses);
-        ASSERT_TRUE(allFinite(g));
-        // Relative agreement per pixel: float rounding differs between LLVM and the C++ compiler.
-        constexpr float kPixelTolerance = 1e-3f;
-        int differing = 0;
-        for (size_t i = 0; i < g.pixels.size(); ++i) {
-            glm::vec3 d = glm::abs(g.pixels[i] - c.pixels[i]);
-            float scale = std::max(1e-3f, util::luminance(c.pixels[i]));
-            if (std::max(d.r, std::max(d.g, d.b)) > kPixelTolerance * scale + 1e-5f)
-                ++differing;
-        }
-        double gm = meanLuminance(g), cm = meanLuminance(c);
-        std::printf("cpu vs gpu, sampler %s: mean %.5f vs %.5f, %d of %zu pixels differ\n",
-                    samplerKindName(kind), cm, gm, differing, g.pixels.size());
-        // Diverged paths: a few percent at most (rounding flips roulette or a grazing test).
-        EXPECT_LT(differing, int(g.pixels.size() / 20)) << samplerKindName(kind);
-        EXPECT_NEAR(gm, cm, 0.02 * cm) << samplerKindName(kind);
-        EXPECT_EQ((*gpu)->validationMessageCount(), 0);
-    }
+                             SamplerKind::Env, SamplerKind::Mis})
+        expectGpuMatchesCpu(scene, kind);
+}
+
+// `mis`'s shadow-ray roulette under a concentrated env, where its constant c is scaled down
+// from kMisEnvRoulette (sampler_constants.h misEnvRoulette): the Vulkan tracer reads c from its
+// params block, the CPU tracer computes it; the same c makes the same coin decisions.
+TEST(GpuPathTracer, MisRouletteUnderASunMatchesCpu) {
+    const scene::Environment sunSky =
+        makeSunSkyEnvironment(128, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e4, 2.0);
+    float c = 0.0f;
+    expectGpuMatchesCpu(glossySphereOnGround(sunSky.image), SamplerKind::Mis, &c);
+    EXPECT_LT(c, float(kMisEnvRoulette)) << "the scaled constant, not the old one";
 }
 
 TEST(GpuPathTracer, ResetAccumulationStartsOver) {

@@ -98,6 +98,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     bool uploadSamplers = false;
     uint32_t samplerInfo[4] = {m_samplerInfo[0], m_samplerInfo[1], m_samplerInfo[2], m_samplerInfo[3]};
     float samplerEnvMean = m_samplerEnvMean;
+    float samplerEnvRoulette = m_samplerEnvRoulette;
     const SamplerTablesRebuilds rebuildsBefore = m_tablesCache.rebuilds();
     if (usesDirectionSamplers()) {
         if (m_createTables) {
@@ -130,9 +131,11 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
             samplerInfo[2] = samplers.tailOffset;
             samplerInfo[3] = samplers.envLevel;
             samplerEnvMean = samplers.envMean;
+            samplerEnvRoulette = samplers.envRoulette;
         }
         std::copy(std::begin(samplerInfo), std::end(samplerInfo), d.params.samplerInfo);
         d.params.samplerEnv[0] = samplerEnvMean;
+        d.params.samplerEnv[1] = samplerEnvRoulette;
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     struct Upload {
@@ -221,6 +224,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         m_packedSamplerMaterials = samplers.materials;
     std::copy(std::begin(samplerInfo), std::end(samplerInfo), m_samplerInfo);
     m_samplerEnvMean = samplerEnvMean;
+    m_samplerEnvRoulette = samplerEnvRoulette;
 
     UpdateCounts& c = m_lastUpdate;
     c = UpdateCounts{};

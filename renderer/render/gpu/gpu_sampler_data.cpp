@@ -62,6 +62,7 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         const SamplerEnvironment& env = t.environment();
         d.lit = env.hasLight();
         d.envMean = float(env.cellAverage(0, 0, 0));
+        d.envRoulette = misEnvRoulette(env.effectiveSolidAngle());
         d.envLevel = uint32_t(env.level());
         if (d.lit)
             d.envNodes = env.fine().table();

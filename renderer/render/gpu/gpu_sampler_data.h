@@ -77,6 +77,7 @@ struct GpuSamplerData {
     uint32_t kind = 0; // SamplerKind as its integer code
     bool lit = false;
     float envMean = 0.0f;
+    float envRoulette = 0.0f; // `mis`'s shadow-ray roulette constant c (misEnvRoulette)
     uint32_t tailOffset = 0;
     uint32_t envLevel = 0; // the env map's level N
     std::vector<wavelet::HierarchicalSampler::TableNode> envNodes; // never empty

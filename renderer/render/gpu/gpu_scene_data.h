@@ -44,7 +44,7 @@ struct GpuParams {
     float lightInfo[4];   // x = light selection probability 1/n (LightSet), 0 without lights
     // Direction samplers (gpu_sampler_data.h; set by the driver, zero for `bsdf`):
     uint32_t samplerInfo[4]; // kind code, env lit (0/1), word offset of 8^2 env averages, env level
-    float samplerEnv[4];     // x = mean luminance of the sampler's env map
+    float samplerEnv[4];     // x = mean luminance of the sampler's env map, y = `mis`'s roulette c
 };
 static_assert(sizeof(GpuParams) == 176);
 

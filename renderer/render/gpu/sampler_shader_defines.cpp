@@ -62,7 +62,6 @@ std::vector<std::string> samplerShaderDefines() {
         defineUint("MODE_ORACLE", kGpuSamplerOracle),
         // The mixtures.
         define("MIS_WEIGHT", doubleLiteral(kMisWeight)),
-        define("MIS_ENV_ROULETTE", floatLiteral(kMisEnvRoulette)),
         define("WAVELET_PRODUCT_VERTICES", kWaveletProductVertices),
         define("PRODUCT_CACHE_HEADER_WORDS", int(GpuProductCacheLayout::kHeaderWords)),
         define("PRODUCT_CACHE_PYRAMID_AT", int(GpuProductCacheLayout::kPyramidAt)),

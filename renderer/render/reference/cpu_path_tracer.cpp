@@ -219,13 +219,14 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
         m_options.sampler == SamplerKind::Env ? 0.0f : mat.brdf->pdf(mat.params, wo, wi);
     const float w = m_options.sampler == SamplerKind::Env ? 1.0f : powerWeight(d.pdf, bsdfPdf);
     float scale = wi.z * w / d.pdf;
-    // `mis`'s Russian roulette on the shadow ray (sampler_constants.h kMisEnvRoulette; env_nee.glsl
+    // `mis`'s Russian roulette on the shadow ray (sampler_constants.h misEnvRoulette; env_nee.glsl
     // is the twin) wherever the NEE is `mis`'s technique: `mis`, and `wavelet` past its product
     // vertices and under the EnvMis policy. u3 its coin: the env technique alone draws no
-    // technique with it.
+    // technique with it. c from the env's shape (its effective solid angle), not its intensity.
     if (m_options.sampler != SamplerKind::Env && nee.envTechniqueOnly()) {
         const glm::vec3 bf = beta * f;
-        const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / float(kMisEnvRoulette);
+        const float c = misEnvRoulette(m_samplerTables->environment().effectiveSolidAngle());
+        const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / c;
         if (p < 1.0f) {
             if (!(u3 < p)) return glm::vec3(0.0f);
             scale /= p;

@@ -1,6 +1,6 @@
 // Issue 20: env next-event estimation keeps every sample of a diffuse scene under a sun bounded,
-// `mis`'s roulette on its shadow ray keeps the mean (issue 12), and the outlier tracer finds a
-// known outlier path.
+// `mis`'s roulette on its shadow ray keeps the mean and reads no intensity (issue 12), and the
+// outlier tracer finds a known outlier path.
 //
 // The bound (docs/estimator.md "Direction samplers"): the env technique's pdf is the conservative
 // luminance table over its integral E (p_env >= lum(L) / E wherever L > 0), so an env-NEE term of
@@ -14,6 +14,7 @@
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/reference/cpu_path_tracer.h"
 #include "render/reference/outlier_tracer.h"
+#include "render/sampling/sampler_environment.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/testing/cpu_test_tracer.h"
 #include "render/testing/pixel_moments.h"
@@ -126,7 +127,8 @@ TEST(EnvNee, DiffuseSamplesStayUnderTheEnvIntegralBound) {
 
 // `mis`'s Russian roulette on the env shadow ray (sampler_constants.h kMisEnvRoulette) is
 // unbiased: a dark Lambert sphere (albedo 0.04) in a white furnace, one bounce. Every env-NEE
-// term there has max(beta f) cos w <= 0.04/pi < kMisEnvRoulette, so every shadow ray plays the
+// term there has max(beta f) cos w <= 0.04/pi < kMisEnvRoulette (a constant env is spread: its
+// c is kMisEnvRoulette itself, misEnvRoulette), so every shadow ray plays the
 // roulette; `bsdf` has no env NEE and no roulette. The two image means agree within 4 sigma
 // (dropping the 1/p of the survivors: z = -5.6 at kMisEnvRoulette = 0.02).
 TEST(EnvNee, MisShadowRayRouletteKeepsTheMean) {
@@ -150,6 +152,90 @@ TEST(EnvNee, MisShadowRayRouletteKeepsTheMean) {
                 m[1].mean, z);
     EXPECT_LT(std::abs(z), 4.0);
     EXPECT_GT(m[0].mean, 0.0);
+}
+
+// A sky whose light the sun holds: `mis`'s roulette constant c is scaled down there
+// (sampler_constants.h misEnvRoulette), so the tests below exercise the concentration rule.
+scene::Environment rouletteSunSky(float intensity, const glm::vec3& tint) {
+    scene::Environment env =
+        makeSunSkyEnvironment(128, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e4, 2.0);
+    env.intensity = intensity;
+    env.tint = tint;
+    return env;
+}
+
+// The roulette constant reads the env's shape only: its effective solid angle (integral L)^2 /
+// integral L^2 is invariant under the env's intensity and a grey tint, so p is too (LightMix,
+// LightRemix: each path's estimate linear in every intensity). A constant env (4 pi sr) keeps
+// kMisEnvRoulette; the sun sky gets less, and never below kMisEnvRouletteMinScale of it.
+TEST(EnvNee, MisRouletteConstantIsScaleInvariantAndFollowsTheEnvsConcentration) {
+    const SamplerEnvironment base = SamplerEnvironment::build(rouletteSunSky(1.0f, glm::vec3(1.0f)));
+    const double omega = base.effectiveSolidAngle();
+    const float c = misEnvRoulette(omega);
+    std::printf("[env nee] sun sky: effective solid angle %.5g sr, roulette c %.5g\n", omega, c);
+    ASSERT_LT(omega, kMisEnvRouletteSolidAngle);
+    EXPECT_LT(c, float(kMisEnvRoulette));
+    EXPECT_GE(c, float(kMisEnvRoulette * kMisEnvRouletteMinScale));
+    EXPECT_NEAR(c, kMisEnvRoulette * omega / kMisEnvRouletteSolidAngle, 1e-6);
+    for (const auto& [intensity, tint] :
+         {std::pair{2.0f, glm::vec3(1.0f)}, std::pair{3.7f, glm::vec3(1.0f)},
+          std::pair{1.0f, glm::vec3(0.3f)}, std::pair{1e3f, glm::vec3(0.01f)}}) {
+        const SamplerEnvironment scaled = SamplerEnvironment::build(rouletteSunSky(intensity, tint));
+        // Equal up to the float rounding of the tables' luminance (exact at 2x: a power of 2).
+        EXPECT_NEAR(scaled.effectiveSolidAngle(), omega, 1e-6 * omega) << intensity;
+        EXPECT_NEAR(misEnvRoulette(scaled.effectiveSolidAngle()), c, 1e-6f * c) << intensity;
+    }
+    scene::Environment furnace; // constant white: 4 pi sr, the spread end
+    furnace.intensity = 5.0f;
+    const SamplerEnvironment flat = SamplerEnvironment::build(furnace);
+    EXPECT_NEAR(flat.effectiveSolidAngle(), 4.0 * std::numbers::pi, 1e-3);
+    EXPECT_EQ(misEnvRoulette(flat.effectiveSolidAngle()), float(kMisEnvRoulette));
+    EXPECT_EQ(misEnvRoulette(1e-6), float(kMisEnvRoulette * kMisEnvRouletteMinScale));
+}
+
+// Under the sun sky, where c differs from kMisEnvRoulette, the roulette keeps the mean: dark
+// Lambert sphere and ground (albedo 0.02: max(beta f) cos w <= 0.02/pi < c, so every env shadow
+// ray of this one-bounce scene plays), `mis` against `env` (light sampling alone, no roulette)
+// within 4 sigma. And each path's estimate is linear in the env's intensity: at 2x (every number
+// of the tables scales exactly) the image is bit for bit 2x, coins and all.
+TEST(EnvNee, MisRouletteUnderASunKeepsTheMeanAndIsLinearInTheIntensity) {
+    constexpr float kDark = 0.02f;
+    auto sceneAt = [&](float intensity) {
+        auto s = diffuseSceneUnder(rouletteSunSky(intensity, glm::vec3(1.0f)));
+        for (scene::Material& m : s->materials) m.baseColor = glm::vec3(kDark);
+        return s;
+    };
+    const auto scene = sceneAt(1.0f);
+    constexpr int kSize = 24, kPasses = 256;
+    PixelMoments m[2];
+    const SamplerKind kinds[2] = {SamplerKind::Mis, SamplerKind::Env};
+    for (int k = 0; k < 2; ++k) {
+        auto tracer = tracerFor(scene, kinds[k], kSize, 1);
+        ASSERT_TRUE(tracer);
+        const float c = misEnvRoulette(tracer->samplerTables()->environment().effectiveSolidAngle());
+        ASSERT_LT(kDark / std::numbers::pi, c) << "every shadow ray must play";
+        ASSERT_LT(c, float(kMisEnvRoulette)) << "the scaled constant, not the old one";
+        m[k] = pixelMoments(*tracer, kSize, kSize, kPasses, MomentChannel::Luminance);
+    }
+    const double z = (m[0].mean - m[1].mean) / std::hypot(m[0].standardError, m[1].standardError);
+    std::printf("[env nee] sun sky albedo %.2f: mis %.6g +- %.2g, env %.6g +- %.2g, z %.2f\n",
+                kDark, m[0].mean, m[0].standardError, m[1].mean, m[1].standardError, z);
+    EXPECT_LT(std::abs(z), 4.0);
+    EXPECT_GT(m[0].mean, 0.0);
+
+    auto once = tracerFor(scene, SamplerKind::Mis, kSize, 1);
+    auto twice = tracerFor(sceneAt(2.0f), SamplerKind::Mis, kSize, 1);
+    ASSERT_TRUE(once && twice);
+    int lit = 0;
+    for (int pass = 0; pass < 8; ++pass)
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const glm::vec3 a = once->samplePixel(x, y, pass);
+                const glm::vec3 b = twice->samplePixel(x, y, pass);
+                ASSERT_EQ(b, 2.0f * a) << x << "," << y << " pass " << pass;
+                lit += a != glm::vec3(0.0f);
+            }
+    EXPECT_GT(lit, kSize * kSize); // survivors: the comparison saw estimates, not only zeros
 }
 
 TEST(OutlierTracer, FindsTheKnownOutlierPath) {
