@@ -142,8 +142,9 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     }
     // A uniform env (a constant one: 4 pi sr, at the octahedral map's minimum level, whose texels
     // are no detail of the light) is exempt: its product is the lobe itself, which the refinement
-    // resolves (the furnace's ggx r = 0.6, 3.25 such texels: 1% at 44 passes, mis's estimator
-    // needs ~750).
+    // resolves (the furnace's ggx r = 0.6, 3.25 such texels, reached 1% at 44 passes where mis's
+    // estimator needs ~750; since the two-sided extents rule below that lobe, 1/8 of the env, is
+    // EnvMis, and the exemption matters only for lobes of 3.8-4 such texels, >= 1/6 of 4 pi).
     const bool uniformEnv = env.effectiveSolidAngle() >= 4.0 * kPi * (1.0 - 1e-6);
     if (!uniformEnv && p.lobeHalfWidth < kMinProductLobeInEnvTexels * texel) {
         p.mode = ProductMode::EnvMis;
