@@ -159,12 +159,12 @@ TEST(WaveletEnvMisPolicy, AnEditThatNeedsTheProductCodeAsksForANewTracer) {
     o.validation = true;
     auto gpu = makeTestIntegrator(scene, o);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    // The same env with one bright texel holding the light: env and lobe of comparable extent,
-    // the mirror lobe's product pays (same plugin: only the product code is missing).
-    auto spiky = std::make_shared<util::ImageRGB>(*flat);
-    spiky->at(40, 30) = glm::vec3(1e4f);
+    // A sky whose 13-degree sun (~0.05 sr, 10^4 x the sky) holds the light: env and lobe (0.02
+    // sr) of comparable extent, the mirror lobe's product pays (same plugin: only the product
+    // code is missing). (A one-texel sun would sit inside the lobe: EnvMis again.)
     auto edited = std::make_shared<scene::Scene>(*scene);
-    edited->lighting.environment.image = spiky;
+    edited->lighting.environment =
+        makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e4, 13.0);
     ASSERT_EQ(chooseProductPolicy(*plugins::findBrdf("ggx"), params,
                                   SamplerEnvironment::build(edited->lighting.environment))
                   .mode,

@@ -2,7 +2,9 @@
 // their own: their per-hit products are built differently from the CPU's (wavelet: dense at 16^2
 // leaves; oracle: a coarser dense grid, see the GLSL), so the twin test cannot cover them.
 // For the six shading configurations of direction_sampler_test (grazing 85 degrees, mirror-like
-// r = 0.02, Lambert, ...) under the studio env and a sky with a 10^6 sun, the GPU draws 40k
+// r = 0.02, Lambert, ...) under the studio env and a sky with a 10^6 sun (and, for `wavelet`,
+// whose policy takes mis's technique for every lobe wider than that sun, a 13-degree sun of a
+// glossy lobe's extent, where the r = 0.2 lobe keeps the product), the GPU draws 40k
 // directions per configuration and reports what its mixture was built from (weights, window,
 // product pyramid). The pdf those pieces define is evaluated on the CPU (the env tables are the
 // same object the GPU got; the BSDF is the C++ twin of the GLSL plugin); then:
@@ -36,7 +38,9 @@ namespace {
 using namespace testing_configs;
 
 constexpr int kSamples = 40000;
-const double kChiAlpha = util::sidakAlpha(0.01, 4 * kConfigs);
+const double kChiAlpha = util::sidakAlpha(0.01, 5 * kConfigs);
+// The wide sun (env 2): as direction_sampler_test.cpp's, 13 degrees across, 10^4 x the sky.
+constexpr double kWideSunDiameterDeg = 13.0;
 
 // Oracle only: the GPU chose the window the CPU's chooseWindow picks for the exact axis, and its
 // leaves are the dense product (env-weighted BRDF x cos times the env's averages) the CPU
@@ -76,7 +80,7 @@ void expectOracleLeavesMatchTheCpu(const GpuMixture& mix) {
 
 struct Case {
     SamplerKind kind;
-    int env; // 0: studio, 1: sun
+    int env; // 0: studio, 1: one-texel sun, 2: 13-degree sun
 };
 
 class GpuProductSampler : public ::testing::TestWithParam<Case> {};
@@ -96,6 +100,8 @@ TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         ASSERT_TRUE(studioEnv.ok());
         envSource = *studioEnv;
         envSource.rotationDeg = 30.0f;
+    } else if (GetParam().env == 2) {
+        envSource = makeSunSkyEnvironment(256, sunDir, 1e4, kWideSunDiameterDeg);
     } else {
         envSource = makeSunSkyEnvironment(256, sunDir, 1e6);
     }
@@ -118,6 +124,9 @@ TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         const GpuMixture& mix = probe->mixtures[size_t(c)];
         const GpuProbeDraw* draws = &probe->draws[size_t(c) * kSamples];
         EXPECT_NEAR(mix.cProduct + mix.cBsdf + mix.cEnv, 1.0, 1e-6);
+        if (GetParam().env == 2 && c == 3) {
+            EXPECT_GT(mix.cProduct, 0.1); // glossy r = 0.2: the product
+        }
         if (kind == SamplerKind::Oracle) {
             EXPECT_GT(mix.cProduct, 0.1); // the dense product is always in the mixture
             expectOracleLeavesMatchTheCpu(mix);
@@ -150,6 +159,10 @@ TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
         if (studio) {
             o.integrationLevel += 2;
             o.hotDepth -= 2;
+        } else if (GetParam().env == 2) {
+            o.texelSpot = sunDir; // the disc's rim (direction_sampler_test.cpp)
+            o.texelSpotRadius = 0.5 * kWideSunDiameterDeg * util::kPi / 180.0 + 0.017;
+            o.texelSpotDepth = 7;
         } else {
             o.texelSpot = sunDir;
             o.texelSpotRadius = 0.017;
@@ -181,10 +194,11 @@ TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
 
 INSTANTIATE_TEST_SUITE_P(KindsAndEnvs, GpuProductSampler,
                          ::testing::Values(Case{SamplerKind::Wavelet, 0}, Case{SamplerKind::Wavelet, 1},
+                                           Case{SamplerKind::Wavelet, 2},
                                            Case{SamplerKind::Oracle, 0}, Case{SamplerKind::Oracle, 1}),
                          [](const ::testing::TestParamInfo<Case>& i) {
                              return std::string(i.param.kind == SamplerKind::Oracle ? "Oracle" : "Wavelet") +
-                                    (i.param.env == 0 ? "Studio" : "Sun");
+                                    (i.param.env == 0 ? "Studio" : i.param.env == 1 ? "Sun" : "WideSun");
                          });
 
 } // namespace

@@ -12,13 +12,16 @@
 #include "render/sampling/direction_sampler_tables.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_tables_cache.h"
+#include "render/testing/sampler_test_envs.h"
 #include "util/image.h"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <bit>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace wavelit::render {
@@ -73,15 +76,19 @@ TEST(GpuSamplerData, ExactEnvTablesAreEightByteAlignedWhereTheLayoutSays) {
 
 TEST(GpuSamplerData, FlatProductTablesAreEightByteAlignedWhereTheShaderReadsPairs) {
     namespace fl = flat_layout;
-    // 256 x 128 with a small bright source: both glossy lobes get per-hit products.
-    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
-    image->at(40, 30) = glm::vec3(1e4f);
-    scene::Environment env;
-    env.image = image;
+    // 256 x 128 with a 13-degree sun (~0.05 sr, 10^4 x the sky) of the glossy lobes' extent:
+    // every material gets a per-hit product (the two-sided extents rule), windowed for the r = 0.2
+    // lobes, whole-sphere about the normal for the measured table. (A one-texel source sits
+    // inside every lobe the product resolves: those take mis's technique.)
+    auto copper = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
+                                        "/brdfs/glossy-copper-r05.binary");
+    ASSERT_TRUE(copper.ok()) << copper.error().message();
+    const scene::Environment env =
+        makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e4, 13.0);
     const std::vector<SamplerMaterial> materials = {
         {"ggx r=0.2", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}},
-        {"ggx r=0.5", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}},
-        {"blinn r=0.3", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.3f}},
+        {"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *copper}},
+        {"blinn r=0.2", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.2f}},
     };
     SceneSamplerTables scene;
     scene.samplerIndexOfMaterial = {0, 1, 2};

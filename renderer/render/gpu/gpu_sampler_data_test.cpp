@@ -9,9 +9,11 @@
 #include "render/sampling/direction_sampler_tables.h"
 #include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_tables_cache.h"
+#include "render/testing/sampler_test_envs.h"
 #include "util/image.h"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <memory>
 #include <string>
@@ -22,11 +24,10 @@ namespace {
 
 TEST(GpuSamplerData, ProductLobesBuildTheirProductPerHitWithThePolicysShare) {
     // 256 x 128: env texels of 0.025 rad, so blinn r = 0.2 (half-width 0.08) is sampled by the
-    // product, not left to BSDF sampling.
-    auto image = std::make_shared<util::ImageRGB>(256, 128, glm::vec3(0.5f));
-    image->at(40, 30) = glm::vec3(1e4f); // a small bright source: the env is lit and uneven
-    scene::Environment env;
-    env.image = image;
+    // product, not left to BSDF sampling. Each lobe under a sun (10^4 x the sky) of its own
+    // extent, so the two-sided extents rule keeps its product: 13 degrees across (~0.05 sr) for
+    // the r = 0.2 lobes (0.02 sr) and the measured table, 80 degrees (~1.5 sr) for ggx r = 0.5
+    // (0.77 sr). One sun cannot serve both: a light inside a lobe is left to env sampling.
     auto table = plugins::loadMerlBrdf(std::string(WAVELIT_RESOURCE_DIR) +
                                        "/brdfs/glossy-copper-r05.binary");
     ASSERT_TRUE(table.ok()) << table.error().message();
@@ -34,30 +35,30 @@ TEST(GpuSamplerData, ProductLobesBuildTheirProductPerHitWithThePolicysShare) {
     struct Expect {
         SamplerMaterial material;
         double mixBsdf;
+        double sunDiameterDeg;
     };
     const std::vector<Expect> cases = {
-        {{"ggx r=0.2 (cap 0.36)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}}, kWaveletBsdfShare},
+        {{"ggx r=0.2 (cap 0.36)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}},
+         kWaveletBsdfShare, 13.0},
         {{"ggx r=0.5 (whole sphere)", plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.5f}},
-         kWaveletBsdfShare},
+         kWaveletBsdfShare, 80.0},
         {{"blinn r=0.2 (cap 0.24)", plugins::findBrdf("blinn"), {glm::vec3(0.9f), 0.2f}},
-         kGpuNarrowLobeMixBsdf},
+         kGpuNarrowLobeMixBsdf, 13.0},
         {{"measured", plugins::findBrdf("measured"), {glm::vec3(1.0f), 0.5f, 0.0f, *table}},
-         kWaveletBsdfShare},
+         kWaveletBsdfShare, 13.0},
     };
-    std::vector<SamplerMaterial> materials;
-    SceneSamplerTables scene;
     for (const Expect& c : cases) {
-        scene.samplerIndexOfMaterial.push_back(int(materials.size()));
-        materials.push_back(c.material);
-    }
-    scene.tables = DirectionSamplerTables::build(env, materials, SamplerKind::Wavelet);
-    auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, materials.size());
-    ASSERT_TRUE(packed.ok()) << packed.error().message();
-    for (size_t i = 0; i < cases.size(); ++i) {
-        const GpuSamplerMaterial& g = packed->materials[i];
-        SCOPED_TRACE(cases[i].material.name);
-        ASSERT_EQ(g.mode, kGpuSamplerProduct);
-        EXPECT_FLOAT_EQ(g.mixBsdf, float(cases[i].mixBsdf));
+        SCOPED_TRACE(c.material.name);
+        const scene::Environment env = makeSunSkyEnvironment(
+            256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e4, c.sunDiameterDeg);
+        SceneSamplerTables scene;
+        scene.samplerIndexOfMaterial = {0};
+        scene.tables = DirectionSamplerTables::build(env, {c.material}, SamplerKind::Wavelet);
+        auto packed = packGpuSamplers(scene, SamplerKind::Wavelet, 1);
+        ASSERT_TRUE(packed.ok()) << packed.error().message();
+        const GpuSamplerMaterial& g = packed->materials[0];
+        ASSERT_EQ(g.mode, kGpuSamplerProduct) << scene.tables->report();
+        EXPECT_FLOAT_EQ(g.mixBsdf, float(c.mixBsdf));
     }
 }
 

@@ -11,6 +11,8 @@
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/reference/cpu_path_tracer.h"
 #include "render/sampling/direction_sampler.h"
+#include "render/sampling/product/env_product_tables.h"
+#include "render/sampling/sampler_environment.h"
 #include "render/session/integrator_factory.h"
 #include "render/testing/sampler_test_envs.h"
 #include "scene/bvh.h"
@@ -37,7 +39,12 @@ constexpr int kBlocks = kBlocksPerSide * kBlocksPerSide;
 constexpr int kReferencePasses = 512;
 constexpr double kFailSigmas = 4.0;
 
-enum class Lighting { Soft, Sun };
+// WideSun: the same sky with a 30-degree sun 10^6 x its mean (effective solid angle ~0.2 sr),
+// where a ggx r = 0.35 lobe (0.19 sr) keeps `wavelet`'s product under the two-sided extents rule:
+// under the one-texel sun every lobe the 64-wide map resolves is wider than the sun (EnvMis)
+// and r = 0.02 / 0.2 are narrower than its texels (BsdfLobe), so only this case renders the
+// product under a concentrated light.
+enum class Lighting { Soft, Sun, WideSun };
 
 // Which (sampler, lighting, roughness) a finite run can judge. A one-technique sampler is
 // unbiased everywhere but, where its density misses a bright part of the integrand, its mean
@@ -118,10 +125,11 @@ std::shared_ptr<const scene::Scene> makeScene(Lighting lighting, float roughness
     floor.mesh = std::make_shared<scene::TriangleMesh>(groundQuad());
     floor.materialId = 7;
     s->objects.push_back(floor);
-    if (lighting == Lighting::Sun) {
+    if (lighting != Lighting::Soft) {
         // The sun's reflection lands on the sphere (up and behind the camera's shoulder).
         s->lighting.environment = makeSunSkyEnvironment(
-            64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e6, 0.53);
+            64, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e6,
+            lighting == Lighting::Sun ? 0.53 : 30.0);
     } else {
         auto env = loadDownsampledEnvironment(
             std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/studio.exr", 64);
@@ -196,6 +204,12 @@ TEST_P(GpuSamplerUnbiased, EverySamplerMatchesTheCpuReferencePerBlock) {
     // Its own seed: the GPU `mis` run must not share the reference's random streams.
     const BlockStats ref = render(scene, SamplerKind::Mis, DeviceChoice::Cpu, kReferencePasses, 4242);
     ASSERT_TRUE(ref.finite);
+    if (c.lighting == Lighting::WideSun) {
+        const ProductPolicy p = chooseProductPolicy(
+            *plugins::findBrdf("ggx"), {scene->materials[0].baseColor, c.roughness},
+            SamplerEnvironment::build(scene->lighting.environment));
+        ASSERT_EQ(p.mode, ProductMode::Product) << p.reason;
+    }
     for (SamplerKind kind : allSamplerKinds()) {
         if (!judged(kind, c.lighting, c.roughness))
             continue;
@@ -215,7 +229,10 @@ TEST_P(GpuSamplerUnbiased, EverySamplerMatchesTheCpuReferencePerBlock) {
                                       << " (sigma " << sigma << ")";
         }
         std::printf("[gpu unbiased] %s r=%.2f %-8s worst |z| %.2f, %d/%d blocks within 3 SE\n",
-                    c.lighting == Lighting::Sun ? "sun " : "soft", c.roughness,
+                    c.lighting == Lighting::Sun       ? "sun "
+                    : c.lighting == Lighting::WideSun ? "wide sun"
+                                                      : "soft",
+                    c.roughness,
                     samplerKindName(kind), worst, within3, kBlocks);
     }
 }
@@ -223,9 +240,13 @@ TEST_P(GpuSamplerUnbiased, EverySamplerMatchesTheCpuReferencePerBlock) {
 INSTANTIATE_TEST_SUITE_P(GlossySphere, GpuSamplerUnbiased,
                          ::testing::Values(Config{Lighting::Soft, 0.02f}, Config{Lighting::Soft, 0.2f},
                                            Config{Lighting::Soft, 1.0f}, Config{Lighting::Sun, 0.02f},
-                                           Config{Lighting::Sun, 0.2f}, Config{Lighting::Sun, 1.0f}),
+                                           Config{Lighting::Sun, 0.2f}, Config{Lighting::Sun, 1.0f},
+                                           Config{Lighting::WideSun, 0.35f}),
                          [](const ::testing::TestParamInfo<Config>& info) {
-                             return std::string(info.param.lighting == Lighting::Sun ? "Sun" : "Soft") +
+                             const Lighting l = info.param.lighting;
+                             return std::string(l == Lighting::Sun       ? "Sun"
+                                                : l == Lighting::WideSun ? "WideSun"
+                                                                         : "Soft") +
                                     "R" + std::to_string(int(info.param.roughness * 100 + 0.5f));
                          });
 

@@ -27,11 +27,13 @@ namespace {
 
 using namespace testing_configs;
 
-constexpr int kEnvs = 2;
+// 0: the studio, 1: a one-texel sun, 2: a sun of a glossy lobe's extent (`wavelet` only).
+constexpr int kEnvs = 3;
 constexpr int kKinds = 7;
+constexpr int kWideSunEnv = 2;
 // Overall significance 0.01 over every chi-square test of this file (Šidák-corrected per test,
-// pbrt-v4's bsdfs_test practice): uncorrected, 84 tests at 0.01 would fail one run in two.
-const double kChiAlpha = util::sidakAlpha(0.01, kConfigs * kEnvs * kKinds);
+// pbrt-v4's bsdfs_test practice): uncorrected, 90 tests at 0.01 would fail one run in two.
+const double kChiAlpha = util::sidakAlpha(0.01, kConfigs * (2 * kKinds + 1));
 constexpr int kChiSamples = 40000;
 constexpr int kMeanSamples = 20000;
 // Midpoint quadrature of the dense integral (2x2 cells per texel, kHotSub^2 near narrow lobes).
@@ -62,8 +64,16 @@ glm::vec3 sunDirection() {
     return glm::normalize(r + glm::vec3(0.0f, 0.14f, 0.0f));
 }
 
-// The soft studio env (rotated 30 degrees) and a sky with a sun 1e6 x the sky mean placed 8
-// degrees from the glossy configuration's reflection vector.
+// The wide sun's angular diameter: 13 degrees (effective solid angle 0.051 sr, between the city
+// sun's 0.0048 and the studio's 0.078), so the glossy r = 0.2 lobe (0.020 sr) is of its extent
+// and keeps the product under the two-sided extents rule (sampler_constants.h); under the
+// one-texel sun the light sits inside every lobe the product resolves and `wavelet` takes mis's
+// technique there.
+constexpr double kWideSunDiameterDeg = 13.0;
+
+// The soft studio env (rotated 30 degrees), a sky with a one-texel sun 1e6 x the sky mean placed
+// 8 degrees from the glossy configuration's reflection vector, and the same sky with a 13-degree
+// sun 1e4 x the sky mean (~97% of the light) there.
 scene::Environment testEnvironment(int e) {
     if (e == 0) {
         auto studio = loadDownsampledEnvironment(
@@ -73,6 +83,8 @@ scene::Environment testEnvironment(int e) {
         env.rotationDeg = 30.0f;
         return env;
     }
+    if (e == kWideSunEnv)
+        return makeSunSkyEnvironment(256, sunDirection(), 1e4, kWideSunDiameterDeg);
     return makeSunSkyEnvironment(256, sunDirection(), 1e6);
 }
 
@@ -104,7 +116,8 @@ struct Param {
 };
 
 std::string paramName(const testing::TestParamInfo<Param>& info) {
-    std::string s = std::string(info.param.env == 0 ? "studio" : "sun") + "_" +
+    const char* env = info.param.env == 0 ? "studio" : info.param.env == 1 ? "sun" : "widesun";
+    std::string s = std::string(env) + "_" +
                     kConfigList[info.param.config].name + "_" + samplerKindName(info.param.kind);
     for (char& ch : s)
         if (!std::isalnum(static_cast<unsigned char>(ch)))
@@ -117,7 +130,8 @@ std::vector<Param> allParams() {
     for (int e = 0; e < kEnvs; ++e)
         for (int c = 0; c < kConfigs; ++c)
             for (SamplerKind k : allSamplerKinds())
-                p.push_back({e, c, k});
+                if (e != kWideSunEnv || k == SamplerKind::Wavelet)
+                    p.push_back({e, c, k});
     return p;
 }
 
@@ -156,6 +170,12 @@ TEST_P(DirectionSamplerTest, ChiSquareMatchesPdf) {
     if (GetParam().env == 0 && samplerHasEnvNee(GetParam().kind)) {
         o.integrationLevel += 2;
         o.hotDepth -= 2;
+    } else if (GetParam().env == kWideSunEnv) {
+        // The wide sun's rim: its disc's radius + a texel's, at 128^2 midpoints per integration
+        // texel (the disc holds ~40 map texels of one value: its jumps are at the rim only).
+        o.texelSpot = sunDirection();
+        o.texelSpotRadius = 0.5 * kWideSunDiameterDeg * util::kPi / 180.0 + 0.017;
+        o.texelSpotDepth = 7;
     } else if (samplerHasEnvNee(GetParam().kind)) {
         o.texelSpot = sunDirection();
         o.texelSpotRadius = 0.017; // + an integration texel's radius: the sun texel's corners
@@ -270,13 +290,23 @@ TEST(DirectionSampler, KindNamesRoundTrip) {
     EXPECT_FALSE(parseSamplerKind(std::string("nope")).ok());
 }
 
+// Under the wide sun: r = 0.02 is BsdfLobe, glossy r = 0.2 builds its product (the sun 2.5x the
+// lobe), grazing r = 0.3, normal view r = 0.5 and rough r = 1 are wider than the sun (env mis by
+// the lobe-wider side), Lambert is env mis (hemisphere-wide).
 TEST(DirectionSampler, ReportNamesEveryMaterialChoice) {
-    const auto& t = tablesFor(1, SamplerKind::Wavelet);
+    const auto& t = tablesFor(kWideSunEnv, SamplerKind::Wavelet);
     const std::string report = t.report();
     for (const Config& c : kConfigList)
         EXPECT_NE(report.find(c.name), std::string::npos) << report;
-    EXPECT_NE(report.find("bsdf lobe"), std::string::npos) << report; // r = 0.02
-    EXPECT_NE(report.find("product"), std::string::npos) << report;
+    EXPECT_NE(report.find("mirror r0.02: bsdf lobe:"), std::string::npos) << report;
+    EXPECT_NE(report.find("glossy r0.2: product:"), std::string::npos) << report;
+    EXPECT_NE(report.find("grazing 85: env mis: lobe wider than the env"), std::string::npos)
+        << report;
+    EXPECT_NE(report.find("normal view: env mis: lobe wider than the env"), std::string::npos)
+        << report;
+    EXPECT_NE(report.find("rough r1: env mis: lobe wider than the env"), std::string::npos)
+        << report;
+    EXPECT_NE(report.find("lambert: env mis: hemisphere-wide"), std::string::npos) << report;
 }
 
 } // namespace

@@ -85,7 +85,7 @@ double binRadius(const wavelet::OctahedralMap& map, int b, int x, int y, glm::dv
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env) {
     ProductPolicy p;
-    char why[320];
+    char why[400];
     if (!env.hasLight()) {
         p.mode = ProductMode::BsdfLobe;
         p.reason = "black environment: nothing to sample but the BSDF";
@@ -142,8 +142,9 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     }
     // A uniform env (a constant one: 4 pi sr, at the octahedral map's minimum level, whose texels
     // are no detail of the light) is exempt: its product is the lobe itself, which the refinement
-    // resolves (the furnace's ggx r = 0.6, 3.25 such texels: 1% at 44 passes, mis's estimator
-    // needs ~750).
+    // resolves (the furnace's ggx r = 0.6, 3.25 such texels, reached 1% at 44 passes where mis's
+    // estimator needs ~750; since the two-sided extents rule below that lobe, 1/8 of the env, is
+    // EnvMis, and the exemption matters only for lobes of 3.8-4 such texels, >= 1/6 of 4 pi).
     const bool uniformEnv = env.effectiveSolidAngle() >= 4.0 * kPi * (1.0 - 1e-6);
     if (!uniformEnv && p.lobeHalfWidth < kMinProductLobeInEnvTexels * texel) {
         p.mode = ProductMode::EnvMis;
@@ -155,15 +156,30 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         p.reason = why;
         return p;
     }
+    // The two-sided extents rule (sampler_constants.h): the product only where env and lobe are
+    // of comparable extent, kEnvMisSolidAngleRatio on the env-wider side, kLobeMisSolidAngleRatio
+    // on the lobe-wider side.
     const double lobeSolidAngle = 2.0 * kPi * (1.0 - std::cos(p.lobeHalfWidth));
     const double envSolidAngle = env.effectiveSolidAngle();
     if (envSolidAngle > kEnvMisSolidAngleRatio * lobeSolidAngle) {
         p.mode = ProductMode::EnvMis;
         std::snprintf(why, sizeof why,
-                      "env effective solid angle %.4g sr > %g x the lobe's %.4g sr: BSDF sampling "
-                      "follows the env across the lobe, so the vertex uses mis's env NEE (no "
-                      "per-hit product)",
-                      envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle);
+                      "env wider than the lobe: env effective solid angle %.4g sr > %g x the "
+                      "lobe's %.4g sr (ratio %.3g): BSDF sampling follows the env across the "
+                      "lobe, so the vertex uses mis's env NEE (no per-hit product)",
+                      envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle,
+                      envSolidAngle / lobeSolidAngle);
+        p.reason = why;
+        return p;
+    }
+    if (lobeSolidAngle > kLobeMisSolidAngleRatio * envSolidAngle) {
+        p.mode = ProductMode::EnvMis;
+        std::snprintf(why, sizeof why,
+                      "lobe wider than the env: the lobe's %.4g sr > %g x the env effective solid "
+                      "angle %.4g sr (ratio %.3g): the light sits inside the lobe, so mis's env "
+                      "NEE follows the integrand and the vertex uses it (no per-hit product)",
+                      lobeSolidAngle, kLobeMisSolidAngleRatio, envSolidAngle,
+                      lobeSolidAngle / envSolidAngle);
         p.reason = why;
         return p;
     }
@@ -178,10 +194,12 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     std::snprintf(why, sizeof why,
                   "mirror lobe: cap %.3f rad around the reflection vector (%s), %dx%d bins, 32^2 "
                   "product, K env %zu / brdf %zu, lobe-refined to %.3f rad, then by the env "
-                  "pyramid; env effective solid angle %.4g sr <= %g x the lobe's %.4g sr",
+                  "pyramid; comparable extents: env effective solid angle %.4g sr, the lobe's "
+                  "%.4g sr (env / lobe %.3g, within %g..%g)",
                   p.capHalfAngle, whole ? "whole sphere" : "window", 1 << p.binLevel,
                   1 << p.binLevel, p.envKeep, p.brdfKeep, p.refineCellAngle, envSolidAngle,
-                  kEnvMisSolidAngleRatio, lobeSolidAngle);
+                  lobeSolidAngle, envSolidAngle / lobeSolidAngle, 1.0 / kLobeMisSolidAngleRatio,
+                  kEnvMisSolidAngleRatio);
     p.reason = why;
     return p;
 }

@@ -35,7 +35,7 @@ namespace wavelit::render {
 // tail's share, see DirectionSampler).
 // EnvMis: the lobe is hemisphere-wide (Lambert), only 2-4 env texels wide (a product at that
 // resolution does no better than mis), or env and mirror lobe are of very different
-// extent (kEnvMisSolidAngleRatio): the material's vertices use `mis`'s technique (env NEE by the exact env technique, MIS against the BSDF
+// extent (env > kEnvMisSolidAngleRatio x lobe or lobe > kLobeMisSolidAngleRatio x env): the material's vertices use `mis`'s technique (env NEE by the exact env technique, MIS against the BSDF
 // continuation; vertexSamplerKind) and no product tables are built.
 enum class ProductMode { Product, BsdfLobe, EnvMis };
 

@@ -22,20 +22,44 @@ namespace {
 // difference is the direction -> square round trip (1e-16), except on texel edges.
 constexpr double kPdfRelativeTolerance = 1e-9;
 
+constexpr double kPi = 3.141592653589793;
+
+const glm::vec3 kSunDirection = glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f));
+
+// A sky whose one-texel sun (10^6 x the sky's mean) holds the light: its effective solid angle
+// is about a texel's, far narrower than any lobe the product resolves.
 SamplerEnvironment sunEnvironment() {
-    return SamplerEnvironment::build(
-        makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e6));
+    return SamplerEnvironment::build(makeSunSkyEnvironment(256, kSunDirection, 1e6));
+}
+
+// A sky whose 13-degree sun (10^4 x the sky's mean, ~97% of the light) is a concentrated light of
+// the extent of a glossy lobe (effective solid angle 0.047 sr, between the city sun's 0.0048 and
+// the studio's 0.078): where the product is still chosen for ggx r = 0.2 (0.020 sr).
+SamplerEnvironment wideSunEnvironment() {
+    return SamplerEnvironment::build(makeSunSkyEnvironment(512, kSunDirection, 1e4, 13.0));
+}
+
+// ggx's half-width is 2 r^2 and a mirror lobe's extent 2 pi (1 - cos half-width): the roughness
+// whose lobe spans `solidAngle` sr.
+float ggxRoughnessOfSolidAngle(double solidAngle) {
+    return float(std::sqrt(std::acos(1.0 - solidAngle / (2.0 * kPi)) / 2.0));
 }
 
 TEST(EnvProductTables, PolicyFollowsLobeWidth) {
-    const SamplerEnvironment env = sunEnvironment();
+    const SamplerEnvironment env = wideSunEnvironment();
     const plugins::Brdf* ggx = plugins::findBrdf("ggx");
     const plugins::Brdf* lambert = plugins::findBrdf("lambert");
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.02f}, env).mode, ProductMode::BsdfLobe);
-    const ProductPolicy glossy = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.3f}, env);
+    const ProductPolicy glossy = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, env);
     EXPECT_EQ(glossy.mode, ProductMode::Product);
     EXPECT_GT(glossy.binLevel, 0);
-    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 1.0f}, env).binLevel, 0);
+    // A whole-sphere lobe (r = 1: 8.9 sr) is of the extent of a constant env (4 pi sr).
+    scene::Environment flat;
+    flat.image = std::make_shared<util::ImageRGB>(512, 256, glm::vec3(1.0f));
+    const ProductPolicy rough =
+        chooseProductPolicy(*ggx, {glm::vec3(0.9f), 1.0f}, SamplerEnvironment::build(flat));
+    EXPECT_EQ(rough.mode, ProductMode::Product);
+    EXPECT_EQ(rough.binLevel, 0);
     EXPECT_TRUE(chooseProductPolicy(*lambert, {glm::vec3(0.8f), 0.5f}, env).aroundNormal);
     scene::Environment black;
     black.image = std::make_shared<util::ImageRGB>(32, 16, glm::vec3(0.0f));
@@ -47,12 +71,16 @@ TEST(EnvProductTables, PolicyFollowsLobeWidth) {
 // under 2 texels BsdfLobe, from 2 to 4 EnvMis (the product resolves the lobe no better than mis's
 // technique: glossy_sun's chrome, docs/performance.md "Sun-lit fireflies of the wavelet sampler"),
 // from 4 the product. ggx's half-width is 2 r^2; a 512 x 256 sun map has level 9 like the city
-// map (texel 0.00692 rad), where the city's chrome (r = 0.1: 2.9 texels) takes mis's technique
-// and r = 0.2 (11.6 texels) keeps its product.
+// map (texel 0.00692 rad), where the city's chrome (r = 0.1: 2.9 texels) takes mis's technique.
+// The sun is a 4-degree disc holding the light, of about the city sun's effective solid angle
+// (0.0048 sr), so a lobe of 4 texels (0.0025 sr) is within the extents rule; r = 0.2 (11.6 texels,
+// 0.0201 sr, over 3x the sun) is EnvMis by the lobe-wider side (glossy_r02_sun's glossy sphere).
 TEST(EnvProductTables, MirrorLobesOfTwoToFourEnvTexelsTakeMisTechnique) {
-    const SamplerEnvironment env = SamplerEnvironment::build(
-        makeSunSkyEnvironment(512, glm::normalize(glm::vec3(0.3f, 0.8f, 0.2f)), 1e6));
+    const SamplerEnvironment env =
+        SamplerEnvironment::build(makeSunSkyEnvironment(512, kSunDirection, 1e5, 4.0));
     ASSERT_EQ(env.level(), 9);
+    ASSERT_GT(env.effectiveSolidAngle(), 0.004);
+    ASSERT_LT(env.effectiveSolidAngle(), 0.006);
     const double texel = std::sqrt(4.0 * 3.141592653589793) / 512.0;
     const plugins::Brdf* ggx = plugins::findBrdf("ggx");
     // The roughness whose half-width is `texels` env texels.
@@ -63,23 +91,26 @@ TEST(EnvProductTables, MirrorLobesOfTwoToFourEnvTexelsTakeMisTechnique) {
     EXPECT_EQ(mode(0.1f), ProductMode::EnvMis);
     EXPECT_EQ(mode(roughness(3.95)), ProductMode::EnvMis);
     EXPECT_EQ(mode(roughness(4.05)), ProductMode::Product);
-    EXPECT_EQ(mode(0.2f), ProductMode::Product);
+    const ProductPolicy r02 = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, env);
+    EXPECT_EQ(r02.mode, ProductMode::EnvMis);
+    EXPECT_NE(r02.reason.find("lobe wider than the env"), std::string::npos) << r02.reason;
     const ProductPolicy chrome = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.1f}, env);
     EXPECT_NE(chrome.reason.find("4 env texels"), std::string::npos) << chrome.reason;
     EXPECT_EQ(MaterialProductTables::build(env, chrome).bytes(), 0u);
     // A constant env (level 4, texels 0.22 rad that are no detail of its light) is exempt: a lobe
-    // of 3 such texels (ggx r = 0.58, a 1.34 sr lobe within 16x of the env's 4 pi) keeps its product.
+    // of 3.9 such texels (ggx r = 0.66, a 2.2 sr lobe within 6x of the env's 4 pi) keeps its product.
     scene::Environment flat;
     flat.image = std::make_shared<util::ImageRGB>(8, 4, glm::vec3(1.0f));
     const SamplerEnvironment constant = SamplerEnvironment::build(flat);
     ASSERT_EQ(constant.level(), 4);
-    const float r3 = float(std::sqrt(3.0 * std::sqrt(4.0 * 3.141592653589793) / 16.0 / 2.0));
-    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), r3}, constant).mode, ProductMode::Product);
+    const float r39 = float(std::sqrt(3.9 * std::sqrt(4.0 * kPi) / 16.0 / 2.0));
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), r39}, constant).mode, ProductMode::Product);
 }
 
-// The extents rule (kEnvMisSolidAngleRatio), for mirror lobes: the product only where env and
-// lobe are of comparable extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is
-// left to BSDF sampling (EnvMis). A sun holding the light: the mirror lobe keeps its product.
+// The extents rule, for mirror lobes: the product only where env and lobe are of comparable
+// extent. A constant env spreads over 4 pi sr: a narrow mirror lobe is left to BSDF sampling
+// (EnvMis). A one-texel sun holding the light sits inside the lobe: env sampling follows the
+// integrand (EnvMis). A sun of the lobe's extent holding the light: the lobe keeps its product.
 TEST(EnvProductTables, MirrorLobeProductOnlyWhereEnvAndLobeHaveComparableExtent) {
     const plugins::Brdf* ggx = plugins::findBrdf("ggx");
     scene::Environment flat;
@@ -88,8 +119,102 @@ TEST(EnvProductTables, MirrorLobeProductOnlyWhereEnvAndLobeHaveComparableExtent)
     EXPECT_NEAR(constant.effectiveSolidAngle(), 4.0 * 3.141592653589793, 1e-9);
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, constant).mode, ProductMode::EnvMis);
     const SamplerEnvironment sun = sunEnvironment();
-    EXPECT_LT(sun.effectiveSolidAngle(), 0.05);
-    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, sun).mode, ProductMode::Product);
+    EXPECT_LT(sun.effectiveSolidAngle(), 0.001);
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, sun).mode, ProductMode::EnvMis);
+    const SamplerEnvironment wideSun = wideSunEnvironment();
+    EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, wideSun).mode,
+              ProductMode::Product);
+}
+
+// The two-sided extents rule's boundaries (sampler_constants.h): env wider than 6x the lobe
+// (kEnvMisSolidAngleRatio) or lobe wider than the env (kLobeMisSolidAngleRatio = 1) take mis's
+// technique; between them (env 1-6x the lobe) the product. Lobes sized to straddle each boundary
+// by ~2% under the 13-degree sun (every one of them >= 4 env texels wide, so only the extents
+// decide), and the reason names the rule that fired with its numbers.
+TEST(EnvProductTables, ProductOnlyWhereTheEnvIsOneToSixTimesTheLobe) {
+    const plugins::Brdf* ggx = plugins::findBrdf("ggx");
+    const SamplerEnvironment env = wideSunEnvironment();
+    const double envOmega = env.effectiveSolidAngle();
+    ASSERT_GT(envOmega, 0.03);
+    ASSERT_LT(envOmega, 0.06);
+    auto policy = [&](double lobeOverEnv) {
+        return chooseProductPolicy(
+            *ggx, {glm::vec3(0.9f), ggxRoughnessOfSolidAngle(lobeOverEnv * envOmega)}, env);
+    };
+    const ProductPolicy half = policy(0.5);
+    EXPECT_EQ(half.mode, ProductMode::Product);
+    EXPECT_NEAR(2.0 * kPi * (1.0 - std::cos(half.lobeHalfWidth)), 0.5 * envOmega, 1e-4 * envOmega);
+    EXPECT_NE(half.reason.find("comparable extents"), std::string::npos) << half.reason;
+    EXPECT_NE(half.reason.find("(env / lobe 2, within 1..6)"), std::string::npos) << half.reason;
+
+    EXPECT_EQ(policy(1.0 / 5.9).mode, ProductMode::Product);
+    const ProductPolicy envWider = policy(1.0 / 6.1);
+    EXPECT_EQ(envWider.mode, ProductMode::EnvMis);
+    EXPECT_NE(envWider.reason.find("env wider than the lobe"), std::string::npos) << envWider.reason;
+    EXPECT_NE(envWider.reason.find("> 6 x the lobe's"), std::string::npos) << envWider.reason;
+    EXPECT_NE(envWider.reason.find("(ratio 6.1)"), std::string::npos) << envWider.reason;
+
+    EXPECT_EQ(policy(0.98).mode, ProductMode::Product);
+    const ProductPolicy lobeWider = policy(1.02);
+    EXPECT_EQ(lobeWider.mode, ProductMode::EnvMis);
+    EXPECT_NE(lobeWider.reason.find("lobe wider than the env"), std::string::npos)
+        << lobeWider.reason;
+    EXPECT_NE(lobeWider.reason.find("> 1 x the env"), std::string::npos) << lobeWider.reason;
+    EXPECT_NE(lobeWider.reason.find("(ratio 1.02)"), std::string::npos) << lobeWider.reason;
+    // EnvMis materials build no tables.
+    EXPECT_EQ(MaterialProductTables::build(env, envWider).bytes(), 0u);
+    EXPECT_EQ(MaterialProductTables::build(env, lobeWider).bytes(), 0u);
+}
+
+// The rule's decisions on the bundled maps it was measured on (docs/performance.md "Comparable
+// extents, two-sided": relRMSE^2 x spp of `mis` vs `wavelet`), effective solid angles of the
+// full-resolution maps: studio 0.078 sr (ring_on_ground), courtyard 1.429 sr (cornell_box), city
+// 0.0048 sr (the *_sun scenes, its sun).
+TEST(EnvProductTables, ComparableExtentsOnTheMeasuredMaps) {
+    auto load = [](const char* name) {
+        auto e = loadDownsampledEnvironment(std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/" + name,
+                                            1 << 16);
+        EXPECT_TRUE(e.ok()) << name;
+        return SamplerEnvironment::build(e.ok() ? *e : scene::Environment{});
+    };
+    const SamplerEnvironment studio = load("studio.exr"), courtyard = load("courtyard.exr"),
+                             city = load("city.exr");
+    EXPECT_NEAR(studio.effectiveSolidAngle(), 0.078, 0.0005);
+    EXPECT_NEAR(courtyard.effectiveSolidAngle(), 1.429, 0.0005);
+    EXPECT_NEAR(city.effectiveSolidAngle(), 0.004817, 0.000005);
+    const plugins::Brdf* ggx = plugins::findBrdf("ggx");
+    struct Case {
+        const SamplerEnvironment* env;
+        float roughness;
+        ProductMode mode;
+        const char* why; // what the reason starts with
+    };
+    const Case cases[] = {
+        // The gold at r = 0.27: the lobe 0.85x the env, the product wins per sample (~1.5x).
+        {&studio, 0.27f, ProductMode::Product, "mirror lobe"},
+        // The default scene's gold: env 3.9x the lobe, the product wins per sample (~1.6x).
+        {&studio, 0.2f, ProductMode::Product, "mirror lobe"},
+        // The gold at r = 0.18: env 5.9x the lobe, the product still wins (~1.4x).
+        {&studio, 0.18f, ProductMode::Product, "mirror lobe"},
+        // The gold at r = 0.16: env 9.5x the lobe.
+        {&studio, 0.16f, ProductMode::EnvMis, "env wider than the lobe"},
+        // The gold at r = 0.45: the lobe 6.5x the env, the product wins ~1.25x per sample, less
+        // than its pass costs.
+        {&studio, 0.45f, ProductMode::EnvMis, "lobe wider than the env"},
+        // cornell_box's ggx box (r = 0.35): env 7.6x the lobe, a tie per sample.
+        {&courtyard, 0.35f, ProductMode::EnvMis, "env wider than the lobe"},
+        // r = 0.15 under the city sun: the lobe 1.3x the sun, the product 1.6-2.4x worse.
+        {&city, 0.15f, ProductMode::EnvMis, "lobe wider than the env"},
+        // glossy_r02_sun's sphere: the lobe 4.2x the city sun, the product 5% worse per sample.
+        {&city, 0.2f, ProductMode::EnvMis, "lobe wider than the env"},
+        // r = 0.4 under the city sun: the lobe 66x the sun, the product 32% worse per sample.
+        {&city, 0.4f, ProductMode::EnvMis, "lobe wider than the env"},
+    };
+    for (const Case& c : cases) {
+        const ProductPolicy p = chooseProductPolicy(*ggx, {glm::vec3(0.9f), c.roughness}, *c.env);
+        EXPECT_EQ(p.mode, c.mode) << "r = " << c.roughness << ": " << p.reason;
+        EXPECT_EQ(p.reason.rfind(c.why, 0), 0u) << p.reason;
+    }
 }
 
 // A hemisphere-wide lobe about the normal (Lambert) takes `mis`'s technique under every lit env
@@ -140,10 +265,13 @@ TEST(SamplerWindow, ContainsItsCapAndAlignsWithTheQuadtree) {
 }
 
 TEST(EnvProductTables, FlatExportRoundTrips) {
-    const SamplerEnvironment env = sunEnvironment();
+    // Under the 13-degree sun (under the one-texel sun r = 0.2 is EnvMis: no tables).
+    const SamplerEnvironment env = wideSunEnvironment();
     // r = 0.2: a windowed policy (at r = 0.3 the 4.5-half-width cap is the whole sphere).
-    const MaterialProductTables t = MaterialProductTables::build(
-        env, chooseProductPolicy(*plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}, env));
+    const ProductPolicy policy =
+        chooseProductPolicy(*plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.2f}, env);
+    ASSERT_EQ(policy.mode, ProductMode::Product);
+    const MaterialProductTables t = MaterialProductTables::build(env, policy);
     const FlatProductTables flat = t.flatten();
     ASSERT_GT(t.factorCount(), 1u);
     // bytes() counts the export without building it.
@@ -164,9 +292,12 @@ TEST(EnvProductTables, FlatExportRoundTrips) {
 }
 
 TEST(EnvProductSampler, ReturnedPdfEqualsPdfOfTheDraw) {
-    const SamplerEnvironment env = sunEnvironment();
+    // The 13-degree sun: r = 0.22 (0.029 sr) keeps its product there (under the one-texel sun it
+    // is EnvMis).
+    const SamplerEnvironment env = wideSunEnvironment();
     const ProductPolicy policy =
-        chooseProductPolicy(*plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.3f}, env);
+        chooseProductPolicy(*plugins::findBrdf("ggx"), {glm::vec3(0.9f), 0.22f}, env);
+    ASSERT_EQ(policy.mode, ProductMode::Product);
     const MaterialProductTables t = MaterialProductTables::build(env, policy);
     const glm::dvec3 axis = glm::normalize(glm::dvec3(0.25, 0.8, 0.2));
     const int bin = t.binOf(axis);
