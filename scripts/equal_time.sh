@@ -21,6 +21,7 @@ refSpp=${REF_SPP:-2048}
 samplers=(${SAMPLERS:-bsdf mis wavelet})
 refSampler=${REF_SAMPLER:-mis}
 refDevice=${REF_DEVICE:-cpu}
+device=${DEVICE:-vulkan} # the device of the timed renders (pass_cpu.py reads DEVICE too)
 out=${OUT:-out/equal_time}
 cli=${CLI:-build/release/renderer/cli/wavelit-cli}
 err=build/release/tests/bench/error_share_bench
@@ -49,7 +50,7 @@ for scene in "$@"; do
         sum=0
         for seed in 1 2 3; do
             render "$scene" "$out/img.exr" --sampler "$sampler" --spp "$spp" --seed "$seed" \
-                --device vulkan
+                --device "$device"
             sum=$(python3 -c "print($sum + $(rel2 "$out/$name.$size.ref9001.exr" "$out/img.exr"))")
         done
         read -r perSample perPass inv[$sampler] < <(python3 -c "

@@ -6,10 +6,13 @@ Runs `wavelit-cli render` on the Vulkan device with LP_NUM_THREADS=2 and polls /
 time of each of its threads. Lavapipe runs the passes on its two worker threads and the compile,
 tables and upload on the main thread, so the workers' CPU seconds are the passes' cost even when
 other builds share the cores (wall time is not). Prints: worker_cpu_s main_cpu_s wall_s.
+With env DEVICE=cpu it renders on the C++ tracer instead and prints the whole process's CPU seconds
+(its tile threads live one pass each, so they are counted through the process's rusage; that
+includes the BVH and tables, a few ms at the scenes' sizes) as the first figure, 0 and the wall.
 SHADER_DIR (not -) is passed as WAVELIT_SHADER_DIR to compare shader variants with one binary;
 env CLI picks the binary (default build/release/renderer/cli/wavelit-cli). The first run of a new
 shader variant includes lavapipe's LLVM compile on the worker threads: discard it."""
-import os, sys, subprocess, time, glob
+import os, sys, subprocess, time, glob, resource
 shader, scene, sampler, spp, size = sys.argv[1:6]
 extra = sys.argv[6:]
 cli = os.environ.get("CLI", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "release", "renderer", "cli", "wavelit-cli"))
@@ -17,9 +20,19 @@ env = dict(os.environ, LP_NUM_THREADS="2")
 if shader != "-": env["WAVELIT_SHADER_DIR"] = shader
 out = f"/tmp/pass_cpu_{os.getpid()}.exr"
 cmd = [cli, "render", scene, "-o", out, "--sampler", sampler, "--spp", spp, "--width", size,
-       "--height", size, "--device", "vulkan"] + extra
+       "--height", size, "--device", os.environ.get("DEVICE", "vulkan")] + extra
 tck = os.sysconf("SC_CLK_TCK")
 t0 = time.time()
+if os.environ.get("DEVICE", "vulkan") == "cpu":
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    if r.returncode != 0:
+        print(r.stdout.decode()); sys.exit(1)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    print(f"{cpu:.2f} 0.00 {time.time() - t0:.2f}")
+    os.remove(out)
+    sys.exit(0)
 p = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
 threads = {}
 main_tid = str(p.pid)

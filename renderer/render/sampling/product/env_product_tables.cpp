@@ -141,10 +141,10 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
         return p;
     }
     // A uniform env (a constant one: 4 pi sr, at the octahedral map's minimum level, whose texels
-    // are no detail of the light) is exempt: its product is the lobe itself, which the refinement
-    // resolves (the furnace's ggx r = 0.6, 3.25 such texels, reached 1% at 44 passes where mis's
-    // estimator needs ~750; since the two-sided extents rule below that lobe, 1/8 of the env, is
-    // EnvMis, and the exemption matters only for lobes of 3.8-4 such texels, >= 1/6 of 4 pi).
+    // are no detail of the light) is exempt from this rule, and the env-wider side of the extents
+    // rule below holds it to kUniformEnvMisSolidAngleRatio: its product is the lobe itself, which
+    // the refinement resolves (the furnace's ggx r = 0.6, 3.25 such texels and 1/8 of the env,
+    // reached 1% at 44 passes; mis's estimator needs ~750-1100).
     const bool uniformEnv = env.effectiveSolidAngle() >= 4.0 * kPi * (1.0 - 1e-6);
     if (!uniformEnv && p.lobeHalfWidth < kMinProductLobeInEnvTexels * texel) {
         p.mode = ProductMode::EnvMis;
@@ -161,13 +161,14 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     // on the lobe-wider side.
     const double lobeSolidAngle = 2.0 * kPi * (1.0 - std::cos(p.lobeHalfWidth));
     const double envSolidAngle = env.effectiveSolidAngle();
-    if (envSolidAngle > kEnvMisSolidAngleRatio * lobeSolidAngle) {
+    const double envWiderRatio = uniformEnv ? kUniformEnvMisSolidAngleRatio : kEnvMisSolidAngleRatio;
+    if (envSolidAngle > envWiderRatio * lobeSolidAngle) {
         p.mode = ProductMode::EnvMis;
         std::snprintf(why, sizeof why,
                       "env wider than the lobe: env effective solid angle %.4g sr > %g x the "
                       "lobe's %.4g sr (ratio %.3g): BSDF sampling follows the env across the "
                       "lobe, so the vertex uses mis's env NEE (no per-hit product)",
-                      envSolidAngle, kEnvMisSolidAngleRatio, lobeSolidAngle,
+                      envSolidAngle, envWiderRatio, lobeSolidAngle,
                       envSolidAngle / lobeSolidAngle);
         p.reason = why;
         return p;

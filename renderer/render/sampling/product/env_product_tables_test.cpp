@@ -5,6 +5,7 @@
 
 #include "plugins/brdf_table.h"
 #include "render/sampling/product/env_product_sampler.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/testing/sampler_test_envs.h"
 #include "render/sampling/sampler_window.h"
 #include "util/rng.h"
@@ -118,6 +119,12 @@ TEST(EnvProductTables, MirrorLobeProductOnlyWhereEnvAndLobeHaveComparableExtent)
     const SamplerEnvironment constant = SamplerEnvironment::build(flat);
     EXPECT_NEAR(constant.effectiveSolidAngle(), 4.0 * 3.141592653589793, 1e-9);
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, constant).mode, ProductMode::EnvMis);
+    // ... but a lobe of 1/8 of it keeps the product: a constant env holds the env-wider side to
+    // kUniformEnvMisSolidAngleRatio (16), not 6 (the furnace's ggx r = 0.6).
+    const ProductPolicy wide = chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.6f}, constant);
+    const double wideLobe = 2.0 * 3.141592653589793 * (1.0 - std::cos(wide.lobeHalfWidth));
+    EXPECT_GT(constant.effectiveSolidAngle(), kEnvMisSolidAngleRatio * wideLobe);
+    EXPECT_EQ(wide.mode, ProductMode::Product) << wide.reason;
     const SamplerEnvironment sun = sunEnvironment();
     EXPECT_LT(sun.effectiveSolidAngle(), 0.001);
     EXPECT_EQ(chooseProductPolicy(*ggx, {glm::vec3(0.9f), 0.2f}, sun).mode, ProductMode::EnvMis);
