@@ -9,7 +9,7 @@
 #include "render/gpu/gpu_path_tracer_impl.h"
 #include "render/reference/cpu_path_tracer.h"
 #include "render/sampling/product/env_product_tables.h"
-#include "render/testing/block_statistics.h"
+#include "render/testing/pass_block_statistics.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/testing/sampler_test_envs.h"
 #include "render/testing/test_integrator.h"
@@ -28,7 +28,6 @@ namespace {
 
 constexpr int kSize = 24;
 constexpr int kBlock = 8;
-constexpr int kBlocks = (kSize / kBlock) * (kSize / kBlock);
 
 // A glossy GGX sphere (r = 0.3: policy Product, a per-hit 16^2 product on the GPU) under a sky
 // whose 6-degree sun holds most of the light, bright enough that `bsdf` finds it through the lobe
@@ -62,40 +61,6 @@ std::unique_ptr<Integrator> makeTracer(const std::shared_ptr<scene::Scene>& scen
     return integrator ? std::move(integrator.value()) : nullptr;
 }
 
-// Per-pass block means (each pass's image from the running means before and after it).
-BlockStatistics blockStatistics(Integrator& tracer, int passes) {
-    BlockStatistics stats(kBlocks);
-    std::vector<glm::dvec3> previous(size_t(kSize * kSize), glm::dvec3(0.0));
-    for (int pass = 1; pass <= passes; ++pass) {
-        EXPECT_TRUE(tracer.renderPass().ok());
-        auto img = tracer.image();
-        EXPECT_TRUE(img.ok());
-        std::vector<double> blocks(kBlocks, 0.0);
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                const size_t i = size_t(y * kSize + x);
-                const glm::dvec3 mean(img->pixels[i]);
-                const glm::dvec3 sample = mean * double(pass) - previous[i] * double(pass - 1);
-                previous[i] = mean;
-                blocks[size_t((y / kBlock) * (kSize / kBlock) + x / kBlock)] +=
-                    (sample.r + sample.g + sample.b) / double(kBlock * kBlock);
-            }
-        stats.addPass(blocks);
-    }
-    return stats;
-}
-
-void expectSameMeans(const BlockStatistics& a, const BlockStatistics& b, const char* what) {
-    int within3 = 0;
-    for (size_t i = 0; i < a.blocks(); ++i) {
-        const double z = (a.mean(i) - b.mean(i)) / combinedSigma(a, b, i);
-        EXPECT_LT(std::abs(z), 4.0) << what << ": block " << i << " " << a.mean(i) << " vs "
-                                    << b.mean(i);
-        within3 += std::abs(z) < 3.0 ? 1 : 0;
-    }
-    std::printf("%s: %d of %zu blocks within 3 sigma\n", what, within3, a.blocks());
-}
-
 TEST(GpuProductCache, TheSceneDrawsFromAPerHitProduct) {
     const auto scene = glossyUnderSun(0.0f);
     auto cpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Cpu);
@@ -112,14 +77,14 @@ TEST(GpuProductCache, CachedProductRenderMeanEqualsBsdfPerBlock) {
     auto gpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Vulkan);
     auto cpu = makeTracer(scene, SamplerKind::Wavelet, DeviceChoice::Cpu);
     ASSERT_TRUE(bsdf && gpu && cpu);
-    const BlockStatistics reference = blockStatistics(*bsdf, 512);
-    const BlockStatistics gpuStats = blockStatistics(*gpu, 96);
-    const BlockStatistics cpuStats = blockStatistics(*cpu, 96);
-    expectSameMeans(gpuStats, reference, "vulkan wavelet (cached) vs bsdf");
-    expectSameMeans(cpuStats, reference, "cpu wavelet (cached twin) vs bsdf");
+    const BlockStatistics reference = passBlockStatistics(*bsdf, 512, kSize, kBlock);
+    const BlockStatistics gpuStats = passBlockStatistics(*gpu, 96, kSize, kBlock);
+    const BlockStatistics cpuStats = passBlockStatistics(*cpu, 96, kSize, kBlock);
+    expectSameBlockMeans(gpuStats, reference, "vulkan wavelet (cached) vs bsdf");
+    expectSameBlockMeans(cpuStats, reference, "cpu wavelet (cached twin) vs bsdf");
     // Both caches' estimators against each other, block by block (the CPU twin caches the same
     // pixels' centre-hit mixtures: cpu_camera_nee.cpp).
-    expectSameMeans(cpuStats, gpuStats, "cpu wavelet (cached) vs vulkan wavelet (cached)");
+    expectSameBlockMeans(cpuStats, gpuStats, "cpu wavelet (cached) vs vulkan wavelet (cached)");
     EXPECT_EQ(gpu->validationMessageCount(), 0);
     auto* tracer = dynamic_cast<gpu_tracer::GpuPathTracer*>(gpu.get());
     ASSERT_NE(tracer, nullptr);

@@ -9,7 +9,7 @@
 #include "render/reference/cpu_path_tracer.h"
 
 #include "render/sampling/product/env_product_tables.h"
-#include "render/testing/block_statistics.h"
+#include "render/testing/pass_block_statistics.h"
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/testing/sampler_test_envs.h"
 #include "scene/bvh.h"
@@ -28,7 +28,6 @@ namespace {
 
 constexpr int kSize = 24;
 constexpr int kBlock = 8;
-constexpr int kBlocks = (kSize / kBlock) * (kSize / kBlock);
 
 // A glossy GGX sphere (r = 0.3: policy Product, a per-hit product) filling ~70% of the image
 // under a sky whose 6-degree sun holds most of the light (the scene of the GPU cache's test): the
@@ -59,40 +58,6 @@ std::unique_ptr<CpuPathTracer> makeTracer(const std::shared_ptr<const scene::Sce
         scene, std::make_shared<const scene::Bvh>(scene::buildBvh(*scene)), o, 2);
     EXPECT_TRUE(tracer.ok()) << tracer.error().message();
     return tracer ? std::move(tracer.value()) : nullptr;
-}
-
-// Per-pass block means (each pass's image from the running means before and after it).
-BlockStatistics blockStatistics(CpuPathTracer& tracer, int passes) {
-    BlockStatistics stats(kBlocks);
-    std::vector<glm::dvec3> previous(size_t(kSize * kSize), glm::dvec3(0.0));
-    for (int pass = 1; pass <= passes; ++pass) {
-        EXPECT_TRUE(tracer.renderPass().ok());
-        auto img = tracer.image();
-        EXPECT_TRUE(img.ok());
-        std::vector<double> blocks(kBlocks, 0.0);
-        for (int y = 0; y < kSize; ++y)
-            for (int x = 0; x < kSize; ++x) {
-                const size_t i = size_t(y * kSize + x);
-                const glm::dvec3 mean(img->pixels[i]);
-                const glm::dvec3 sample = mean * double(pass) - previous[i] * double(pass - 1);
-                previous[i] = mean;
-                blocks[size_t((y / kBlock) * (kSize / kBlock) + x / kBlock)] +=
-                    (sample.r + sample.g + sample.b) / double(kBlock * kBlock);
-            }
-        stats.addPass(blocks);
-    }
-    return stats;
-}
-
-void expectSameMeans(const BlockStatistics& a, const BlockStatistics& b, const char* what) {
-    int within3 = 0;
-    for (size_t i = 0; i < a.blocks(); ++i) {
-        const double z = (a.mean(i) - b.mean(i)) / combinedSigma(a, b, i);
-        EXPECT_LT(std::abs(z), 4.0) << what << ": block " << i << " " << a.mean(i) << " vs "
-                                    << b.mean(i);
-        within3 += std::abs(z) < 3.0 ? 1 : 0;
-    }
-    std::printf("%s: %d of %zu blocks within 3 sigma\n", what, within3, a.blocks());
 }
 
 // The image of `passes` passes of a fresh tracer on `scene`.
@@ -155,8 +120,8 @@ TEST(CpuProductCache, CachedRenderMeanEqualsBsdfPerBlock) {
     auto wavelet = makeTracer(scene, SamplerKind::Wavelet);
     auto budgeted = makeTracer(scene, SamplerKind::Wavelet);
     ASSERT_TRUE(bsdf && wavelet && budgeted);
-    const BlockStatistics reference = blockStatistics(*bsdf, 512);
-    const BlockStatistics cachedStats = blockStatistics(*wavelet, 96);
+    const BlockStatistics reference = passBlockStatistics(*bsdf, 512, kSize, kBlock);
+    const BlockStatistics cachedStats = passBlockStatistics(*wavelet, 96, kSize, kBlock);
     // A budget for about half the entries (the full cache's size: its pixels' index words and
     // the entries): a hashed half of the sphere's pixels use `mis`'s technique at their camera
     // vertex.
@@ -164,9 +129,9 @@ TEST(CpuProductCache, CachedRenderMeanEqualsBsdfPerBlock) {
     const uint64_t fullBytes = wavelet->timings().productCacheBytes;
     ASSERT_GT(fullBytes, indexBytes);
     budgeted->setProductCacheBudget(indexBytes + (fullBytes - indexBytes) / 2u);
-    const BlockStatistics budgetedStats = blockStatistics(*budgeted, 96);
-    expectSameMeans(cachedStats, reference, "cpu wavelet (cached) vs bsdf");
-    expectSameMeans(budgetedStats, reference, "cpu wavelet (half cached) vs bsdf");
+    const BlockStatistics budgetedStats = passBlockStatistics(*budgeted, 96, kSize, kBlock);
+    expectSameBlockMeans(cachedStats, reference, "cpu wavelet (cached) vs bsdf");
+    expectSameBlockMeans(budgetedStats, reference, "cpu wavelet (half cached) vs bsdf");
     EXPECT_EQ(wavelet->productCacheBuilds(), 1u) << "built once, read by the other 95 passes";
     EXPECT_EQ(budgeted->productCacheBuilds(), 1u);
     EXPECT_GT(budgeted->productCacheSkipped(), 0u);
