@@ -2,7 +2,8 @@
 # Equal-time error of the Vulkan samplers, measured so that a loaded machine gives the same
 # answer as a quiet one: inverse efficiency = relRMSE² × spp (per-sample error, independent of
 # time) × seconds per pass on an idle 2-core machine (the passes' lavapipe worker CPU seconds from
-# scripts/pass_cpu.py, halved). Lower is better; at equal time the RMSE² of two samplers is in the
+# scripts/pass_cpu.py for SPP passes, median of 3 runs, per pass and halved; DEVICE=cpu: the C++
+# tracer's). Lower is better; at equal time the RMSE² of two samplers is in the
 # ratio of their inverse efficiencies.
 #   bash scripts/equal_time.sh SCENE.wlscene... (env: SIZE 128, SPP 32, REF_SPP 2048,
 #        SAMPLERS "bsdf mis wavelet", REF_SAMPLER mis, REF_DEVICE cpu, OUT out/equal_time,
@@ -46,7 +47,12 @@ for scene in "$@"; do
     declare -A inv=()
     for sampler in "${samplers[@]}"; do
         python3 scripts/pass_cpu.py - "$scene" "$sampler" 2 "$size" >/dev/null # warm the kernel
-        cpu=$(python3 scripts/pass_cpu.py - "$scene" "$sampler" 5 "$size" | cut -d' ' -f1)
+        # The passes of the render whose error is measured (SPP of them, so a first pass that
+        # builds a cache weighs as it does there), the median of three runs: one 5-pass run
+        # swung +-20% at 128^2 under load.
+        cpu=$(for run in 1 2 3; do
+            python3 scripts/pass_cpu.py - "$scene" "$sampler" "$spp" "$size" | cut -d' ' -f1
+        done | sort -g | sed -n 2p)
         sum=0
         for seed in 1 2 3; do
             render "$scene" "$out/img.exr" --sampler "$sampler" --spp "$spp" --seed "$seed" \
@@ -54,7 +60,7 @@ for scene in "$@"; do
             sum=$(python3 -c "print($sum + $(rel2 "$out/$name.$size.ref9001.exr" "$out/img.exr"))")
         done
         read -r perSample perPass inv[$sampler] < <(python3 -c "
-s = max($sum / 3 - $refVar, 0.0) * $spp; p = $cpu / 5 / 2
+s = max($sum / 3 - $refVar, 0.0) * $spp; p = $cpu / $spp / 2
 print(f'{s:.4g} {p:.4f} {s * p:.4g}')")
         other=${compare[$name]:-}
         python3 - "$name" "$sampler" "$perSample" "$perPass" "${inv[$sampler]}" \
