@@ -78,6 +78,37 @@ void expectOracleLeavesMatchTheCpu(const GpuMixture& mix) {
     EXPECT_LT(worst, 1e-3 * largest) << "largest leaf " << largest;
 }
 
+// The configurations' materials, one per configuration (direction_sampler_test's).
+std::vector<SamplerMaterial> configMaterials() {
+    std::vector<SamplerMaterial> materials;
+    for (const Config& c : kConfigList)
+        materials.push_back(
+            {c.name, plugins::findBrdf(c.brdf), {glm::vec3(0.9f, 0.8f, 0.7f), c.roughness}});
+    return materials;
+}
+
+// The suns' direction: beside configuration 3's (glossy r = 0.2) reflection.
+glm::vec3 caseSunDirection() {
+    return glm::normalize(reflectionOf(shadingPoint(kConfigList[3], 3)) +
+                          glm::vec3(0.0f, 0.14f, 0.0f));
+}
+
+// Env 0: the studio map turned 30 degrees; 1: a sky with a one-texel sun 10^6 x brighter;
+// 2: a 13-degree sun 10^4 x the sky.
+scene::Environment caseEnvironment(int env) {
+    if (env == 0) {
+        auto studio = loadDownsampledEnvironment(
+            std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/studio.exr", 256);
+        EXPECT_TRUE(studio.ok());
+        scene::Environment e = studio.ok() ? *studio : scene::Environment{};
+        e.rotationDeg = 30.0f;
+        return e;
+    }
+    if (env == 2)
+        return makeSunSkyEnvironment(256, caseSunDirection(), 1e4, kWideSunDiameterDeg);
+    return makeSunSkyEnvironment(256, caseSunDirection(), 1e6);
+}
+
 struct Case {
     SamplerKind kind;
     int env; // 0: studio, 1: one-texel sun, 2: 13-degree sun
@@ -88,23 +119,9 @@ class GpuProductSampler : public ::testing::TestWithParam<Case> {};
 TEST_P(GpuProductSampler, ChiSquareAndExactPdfForEveryConfiguration) {
     const SamplerKind kind = GetParam().kind;
     const bool studio = GetParam().env == 0;
-    scene::Environment envSource;
-    std::vector<SamplerMaterial> materials;
-    for (const Config& c : kConfigList)
-        materials.push_back({c.name, plugins::findBrdf(c.brdf), {glm::vec3(0.9f, 0.8f, 0.7f), c.roughness}});
-    const glm::vec3 sunDir = glm::normalize(reflectionOf(shadingPoint(kConfigList[3], 3)) +
-                                            glm::vec3(0.0f, 0.14f, 0.0f));
-    if (studio) {
-        auto studioEnv = loadDownsampledEnvironment(
-            std::string(WAVELIT_RESOURCE_DIR) + "/envmaps/studio.exr", 256);
-        ASSERT_TRUE(studioEnv.ok());
-        envSource = *studioEnv;
-        envSource.rotationDeg = 30.0f;
-    } else if (GetParam().env == 2) {
-        envSource = makeSunSkyEnvironment(256, sunDir, 1e4, kWideSunDiameterDeg);
-    } else {
-        envSource = makeSunSkyEnvironment(256, sunDir, 1e6);
-    }
+    const glm::vec3 sunDir = caseSunDirection();
+    const scene::Environment envSource = caseEnvironment(GetParam().env);
+    const std::vector<SamplerMaterial> materials = configMaterials();
     const auto tables = DirectionSamplerTables::build(envSource, materials, kind);
     const SamplerEnvironment& env = tables->environment();
     std::vector<ShadingPoint> points;
@@ -199,6 +216,73 @@ INSTANTIATE_TEST_SUITE_P(KindsAndEnvs, GpuProductSampler,
                          [](const ::testing::TestParamInfo<Case>& i) {
                              return std::string(i.param.kind == SamplerKind::Oracle ? "Oracle" : "Wavelet") +
                                     (i.param.env == 0 ? "Studio" : i.param.env == 1 ? "Sun" : "WideSun");
+                         });
+
+// Both tracers draw the camera vertex's `wavelet` NEE from one mixture: the C++ tracer's build
+// (DirectionSampler with ProductBuild::Tracer) against the kernel's, as the probe reads it back,
+// at every configuration under the three envs: the same technique shares, and the same pdf at
+// the kernel's draws (to float rounding: the kernel builds in float, the C++ in double).
+class GpuTracerProduct : public ::testing::TestWithParam<int> {};
+
+TEST_P(GpuTracerProduct, CpuTracerBuildIsTheKernelsMixture) {
+    const auto tables = DirectionSamplerTables::build(caseEnvironment(GetParam()),
+                                                      configMaterials(), SamplerKind::Wavelet);
+    std::vector<ShadingPoint> points;
+    for (int c = 0; c < kConfigs; ++c)
+        points.push_back(shadingPoint(kConfigList[c], size_t(c)));
+    auto ctx = vk::Context::create({"", true});
+    ASSERT_TRUE(ctx.ok()) << ctx.error().message();
+    constexpr int kDraws = 4000;
+    auto probe = probeGpuSampler(**ctx, *tables, SamplerKind::Wavelet, points, kDraws);
+    ASSERT_TRUE(probe.ok()) << probe.error().message();
+    EXPECT_EQ(probe->validationMessages, 0);
+    EXPECT_EQ((*ctx)->validationMessageCount(), 0);
+    int products = 0;
+    for (int c = 0; c < kConfigs; ++c) {
+        SCOPED_TRACE(kConfigList[c].name);
+        const GpuMixture& gpu = probe->mixtures[size_t(c)];
+        const DirectionSampler cpu(*tables, SamplerKind::Wavelet, points[size_t(c)],
+                                   ProductBuild::Tracer);
+        double share[3] = {0.0, 0.0, 0.0}; // product, bsdf, env
+        for (const ComponentPdf& p : cpu.componentPdfs(reflectionOf(points[size_t(c)]))) {
+            const std::string name = p.technique;
+            share[name == "product" ? 0 : name == "bsdf" ? 1 : 2] += p.weight;
+        }
+        EXPECT_NEAR(share[0], gpu.cProduct, 1e-4);
+        EXPECT_NEAR(share[1], gpu.cBsdf, 1e-4);
+        EXPECT_NEAR(share[2], gpu.cEnv, 1e-4);
+        products += gpu.cProduct > 0.0 ? 1 : 0;
+        int drawn = 0, mismatches = 0;
+        double worst = 0.0;
+        for (int i = 0; i < kDraws; ++i) {
+            const GpuProbeDraw& d = probe->draws[size_t(c) * kDraws + size_t(i)];
+            if (d.pdf < 0.0f)
+                continue;
+            ++drawn;
+            const double expected = gpu.pdf(d.wi), got = cpu.pdfDouble(d.wi);
+            const double relative = std::abs(got - expected) / expected;
+            worst = std::max(worst, relative);
+            if (relative > 1e-3)
+                ++mismatches;
+        }
+        // Draws within float rounding of a leaf edge, as in the test above.
+        EXPECT_LE(mismatches, drawn / 1000 + 1) << "worst relative pdf difference " << worst;
+        std::printf("[tracer product twin] env %d %-13s shares %.3f/%.3f/%.3f, %d of %d pdfs "
+                    "differ > 1e-3 (worst %.2g)\n",
+                    GetParam(), kConfigList[c].name, gpu.cProduct, gpu.cBsdf, gpu.cEnv,
+                    mismatches, drawn, worst);
+    }
+    // The one-texel sun hands every lobe to mis's technique (EnvMis); the others keep products.
+    if (GetParam() != 1) {
+        EXPECT_GT(products, 0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Envs, GpuTracerProduct, ::testing::Values(0, 1, 2),
+                         [](const ::testing::TestParamInfo<int>& i) {
+                             return std::string(i.param == 0   ? "Studio"
+                                                : i.param == 1 ? "Sun"
+                                                               : "WideSun");
                          });
 
 } // namespace

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "render/session/render_options.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/sampling/sampler_tables_cache.h"
 #include "util/result.h"
 #include "wavelet/hierarchical_sampler.h"
@@ -34,20 +35,11 @@ inline constexpr uint32_t kGpuSamplerProduct = 1;
 inline constexpr uint32_t kGpuSamplerBsdfLobe = 2;
 inline constexpr uint32_t kGpuSamplerOracle = 3; // the `oracle`'s per-hit dense product
 inline constexpr uint32_t kGpuSamplerEnvMis = 4; // ProductMode::EnvMis: `mis`'s env NEE technique
-// The finest product level the shader forms per hit: 2^4 x 2^4 leaves, where the CPU's product
-// (ProductPolicy::productLevel) has 2^5. The GPU keeps its pyramid in private memory and pays
-// ~4^m x 4 BRDF evaluations per hit, so finer table details are not synthesised there: the lobe
-// refinement and the env's quadtree refine below the leaves (docs/wavelet-sampler.md "Constants").
-inline constexpr int kGpuMaxProductLevel = 4;
-
-// The defensive BSDF share of a narrow mirror lobe's per-hit product on the GPU (the policy's
-// kWaveletBsdfShare, 0.1, elsewhere): a lobe whose cap is under kGpuNarrowLobeCap (the policy's
-// 64 x 64-bin class) has a window whose 16^2 leaves are wider than the CPU's 32^2 resolve, and
-// the lobe's own sampling follows it exactly. Exact GPU variance at the sun study: ggx r = 0.1
-// 0.466 -> 0.326 (mis 0.438), blinn r = 0.2 0.523 -> 0.418 (mis 0.46); 0.25 for every mirror
-// lobe cost the wider ones up to 1.4x (ggx r = 0.5 0.76 -> 1.06): docs/brdfs.md, last section.
-inline constexpr double kGpuNarrowLobeCap = 0.3; // radians
-inline constexpr double kGpuNarrowLobeMixBsdf = 0.25;
+// The finest product level the shader forms per hit, and the narrow mirror lobes' BSDF share:
+// the tracers' product (sampler_constants.h kTracerMaxProductLevel, kTracerNarrowLobe*).
+inline constexpr int kGpuMaxProductLevel = kTracerMaxProductLevel;
+inline constexpr double kGpuNarrowLobeCap = kTracerNarrowLobeCap; // radians
+inline constexpr double kGpuNarrowLobeMixBsdf = kTracerNarrowLobeMixBsdf;
 
 // The `oracle` on the GPU: per hit a DENSE product over a window fitted to the lobe around the
 // exact axis, like the CPU's (oracle_sampler.h), but at 2^5 x 2^5 leaves, each the mean of

@@ -2,16 +2,17 @@
 // per pixel across passes: the estimator and cache of the Vulkan tracer
 // (shaders/sampling/product_cache.glsl, render/gpu/product_cache.h; docs/estimator.md "Direction
 // samplers", docs/performance.md "The CPU tracer's product cache"). While an image accumulates,
-// camera and scene are fixed, so the mixture (~1k BRDF x cos evaluations and a sparse product) is
-// built once per pixel, in the first pass after a reset, instead of on every path (~5 CPU-s a
-// pass at 512^2 before). Same pixels as the GPU's (product_cache_pixels.h), same validity rule at
-// a path's camera vertex: the pixel's entry when its centre hit the SAME material, else `mis`'s
-// technique (the env alone).
+// camera and scene are fixed, so the mixture (~1k BRDF x cos evaluations and a dense 16^2 product:
+// the kernel's, ProductBuild::Tracer) is built once per pixel, in the first pass after a reset,
+// instead of on every path. Same pixels as the GPU's (product_cache_pixels.h), same mixture, same
+// validity rule at a path's camera vertex: the pixel's entry when its centre hit the SAME
+// material, else `mis`'s technique (the env alone).
 #include "render/reference/cpu_path_tracer.h"
 
 #include "render/reference/cpu_surface.h"
 #include "render/reference/product_cache_pixels.h"
 #include "render/sampling/product/env_product_tables.h"
+#include "render/sampling/sampler_constants.h"
 #include "util/hemisphere_sampling.h"
 #include "wavelet/hierarchical_sampler.h"
 #include "util/log.h"
@@ -19,6 +20,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -27,9 +29,9 @@ namespace {
 
 // What an entry costs in memory, to fit the cache into its budget before building it: the entry,
 // its sampler object, components, description and lobe-refinement closure (kEntryBytes), plus for
-// a per-hit product its pyramid's nodes, at most (4^(m+1) - 1) / 3 of them. Measured at 256^2 on
-// ring_on_ground (m = 5: at most 1365 nodes, 21.8 KB): ~20.5 KB of memory an entry on average
-// (docs/performance.md "The CPU tracer's product cache").
+// a per-hit product its pyramid's nodes, at most (4^(m+1) - 1) / 3 of them. Measured at 512^2 on
+// ring_on_ground (the tracers' m = 4: at most 341 nodes, 6.5 KB estimated): 6.4 KB of memory an
+// entry (docs/performance.md "The C++ tracer builds the kernel's product").
 constexpr uint32_t kEntryBytes = 1024;
 
 uint32_t productEntryBytes(int productLevel) {
@@ -67,7 +69,8 @@ CpuPathTracer::CameraNeeEntry CpuPathTracer::buildCameraNeeEntry(int x, int y) c
     if (!formsCameraProduct(mat)) return entry;
     const util::Frame frame = util::Frame::fromNormal(sp.shading);
     entry.sampler.emplace(*m_samplerTables, SamplerKind::Wavelet,
-                          ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)});
+                          ShadingPoint{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)},
+                          ProductBuild::Tracer);
     return entry;
 }
 
@@ -92,7 +95,7 @@ bool CpuPathTracer::layoutCameraNeeCache() {
             if (!formsCameraProduct(mat)) return 0u;
             const ProductPolicy& policy =
                 m_samplerTables->productTables(size_t(mat.samplerIndex))->policy();
-            return policy.mode == ProductMode::Product ? productEntryBytes(policy.productLevel)
+            return policy.mode == ProductMode::Product ? productEntryBytes(std::min(policy.productLevel, kTracerMaxProductLevel))
                                                        : kEntryBytes;
         });
     const uint64_t budget = m_cameraNeeBudget > 0 ? m_cameraNeeBudget : defaultBudgetBytes();

@@ -37,8 +37,8 @@ SamplerKind vertexSamplerKind(SamplerKind kind, int depth) {
 }
 
 DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
-                                   const ShadingPoint& point)
-    : m_tables(&tables), m_kind(kind), m_point(point),
+                                   const ShadingPoint& point, ProductBuild build)
+    : m_tables(&tables), m_kind(kind), m_build(build), m_point(point),
       m_material(&tables.material(point.material)) {
     m_woLocal = toShading(point.wo);
     const bool lit = tables.environment().hasLight();
@@ -111,12 +111,19 @@ void DirectionSampler::addProduct(SamplerKind kind) {
         } else {
             const int bin = tables->binOf(axis);
             const ProductWindow window = tables->window(bin);
+            const bool tracer = m_build == ProductBuild::Tracer;
+            const int level =
+                tracer ? std::min(policy.productLevel, kTracerMaxProductLevel) : policy.productLevel;
             // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
             // the product's leaf masses are those of the product at 2x its resolution.
-            const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeighted(
-                env, window, policy.productLevel, brdfCosLocal, 2);
-            m_product = EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
-                                                       brdfGrid, policy.brdfKeep);
+            const wavelet::SquareGrid brdfGrid =
+                windowTabulateEnvWeighted(env, window, level, brdfCosLocal, 2);
+            m_product = tracer ? EnvProductSampler::buildDense(
+                                     env, window, tracerProductLeaves(tables->envFactor(bin), brdfGrid))
+                               : EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
+                                                                brdfGrid, policy.brdfKeep);
+            if (tracer && !policy.aroundNormal && policy.capHalfAngle < kTracerNarrowLobeCap)
+                bsdfShare = std::max(bsdfShare, kTracerNarrowLobeMixBsdf);
             if (m_product) {
                 // The refinement's BRDF x cos, captured by value (the sampler may be moved).
                 const plugins::Brdf* brdf = m_material->brdf;
@@ -133,7 +140,7 @@ void DirectionSampler::addProduct(SamplerKind kind) {
                             return 0.0;
                         return double(util::luminance(brdf->eval(params, woLocal, l) * l.z));
                     },
-                    lobeRefineLevels(policy, window, env.level()));
+                    lobeRefineLevels(policy, window, level, env.level()));
             }
             m_describe = m_product ? "wavelet product: " + policy.reason
                                    : "wavelet: all-zero product here, bsdf lobe";

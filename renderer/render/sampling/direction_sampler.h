@@ -94,12 +94,20 @@ struct ComponentPdf {
     double pdf; // solid angle, of the component alone
 };
 
+// How the `wavelet` kind forms its per-point product. Paper: the sparse product of the truncated
+// env factor and the truncated BRDF x cos at the policy's 2^5 leaves (wavelet/product.h), the
+// method's reference. Tracer: what both path tracers use at their product vertices (the Vulkan
+// kernel's build, sampler_constants.h kTracerMaxProductLevel): the env factor synthesised to at
+// most 2^4 leaves times the env-weighted BRDF x cos, dense and untruncated, with the narrow-lobe
+// BSDF share; 4x fewer BRDF evaluations and nodes, and the same mixture on both devices.
+enum class ProductBuild { Paper, Tracer };
+
 class DirectionSampler {
 public:
     // `tables` must outlive the sampler. `kind` may differ from tables.kind() except that
     // Wavelet needs tables built for Wavelet (others fall back to bsdf + env mixing).
     DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
-                     const ShadingPoint& point);
+                     const ShadingPoint& point, ProductBuild build = ProductBuild::Paper);
 
     DirectionSample sample(float u1, float u2, float u3) const;
     float pdf(const glm::vec3& wi) const;
@@ -135,6 +143,7 @@ private:
 
     const DirectionSamplerTables* m_tables;
     SamplerKind m_kind;
+    ProductBuild m_build;
     ShadingPoint m_point;
     const SamplerMaterial* m_material;
     glm::vec3 m_woLocal;

@@ -56,6 +56,23 @@ inline constexpr double kWaveletBsdfShare = 0.1;
 // most where a path's throughput is still 1: at the camera's vertex.
 inline constexpr int kWaveletProductVertices = 1;
 
+// The tracers' per-hit product (both tracers' camera vertex; the Vulkan kernel's at every product
+// vertex): the bin's env factor synthesised to at most 2^kTracerMaxProductLevel x
+// 2^kTracerMaxProductLevel leaves (not the policy's 2^5: the kernel keeps the pyramid in private
+// memory and pays ~4^m x 4 BRDF evaluations per build), each leaf's average (clamped at 0) times
+// BRDF x cos env-weighted over its 2 x 2 sub-cells, untruncated; the lobe refinement and the env's
+// quadtree refine below the leaves. DirectionSampler's ProductBuild::Tracer is the C++ build of
+// it, the paper's sparse product (ProductBuild::Paper) the samplers' reference.
+inline constexpr int kTracerMaxProductLevel = 4;
+// The defensive BSDF share of a narrow mirror lobe's tracer product (kWaveletBsdfShare, 0.1,
+// elsewhere): a lobe whose cap is under kTracerNarrowLobeCap (the policy's 64 x 64-bin class)
+// has a window whose 16^2 leaves are wider than the paper product's 32^2 resolve, and the lobe's
+// own sampling follows it exactly. Exact GPU variance at the sun study: ggx r = 0.1
+// 0.466 -> 0.326 (mis 0.438), blinn r = 0.2 0.523 -> 0.418 (mis 0.46); 0.25 for every mirror
+// lobe cost the wider ones up to 1.4x (ggx r = 0.5 0.76 -> 1.06): docs/brdfs.md, last section.
+inline constexpr double kTracerNarrowLobeCap = 0.3; // radians
+inline constexpr double kTracerNarrowLobeMixBsdf = 0.25;
+
 // "Model only what a scene needs" for the product (issue 12, docs/performance.md "Wavelet pass
 // cost, round 3" and "Comparable extents, two-sided"). The product pays where env and lobe are of
 // comparable extent; it cannot where one is far wider than the other, and the material's vertices

@@ -44,6 +44,25 @@ wavelet::SquareGrid windowEnvGrid(const SamplerEnvironment& env, ProductWindow w
     return grid;
 }
 
+wavelet::SquareGrid tracerProductLeaves(const wavelet::SparseHaar& envFactor,
+                                        const wavelet::SquareGrid& brdf) {
+    // The factor's texels at its own level, then their means over each leaf: the scaling
+    // coefficients at the leaf level, which the kernel synthesises directly.
+    const wavelet::SquareGrid fine = wavelet::inverseHaar(envFactor.toDense());
+    const int block = 1 << std::max(0, fine.level - brdf.level);
+    wavelet::SquareGrid leaves(brdf.level);
+    for (int y = 0; y < leaves.size(); ++y)
+        for (int x = 0; x < leaves.size(); ++x) {
+            double sum = 0.0;
+            for (int j = 0; j < block; ++j)
+                for (int i = 0; i < block; ++i)
+                    sum += fine.at(x * block + i, y * block + j);
+            const double envAverage = std::max(0.0, sum / double(block * block));
+            leaves.at(x, y) = envAverage > 0.0 ? envAverage * brdf.at(x, y) : 0.0;
+        }
+    return leaves;
+}
+
 std::optional<EnvProductSampler>
 EnvProductSampler::buildSparse(const SamplerEnvironment& env, ProductWindow window,
                                const wavelet::SparseHaar& envFactor,

@@ -86,6 +86,13 @@ private:
 // The env factor over a window at level m: average luminance of each global cell (level k + m).
 wavelet::SquareGrid windowEnvGrid(const SamplerEnvironment& env, ProductWindow window, int m);
 
+// The tracers' product leaves (ProductBuild::Tracer, sampler_constants.h kTracerMaxProductLevel):
+// the truncated env factor's average over each texel of `brdf`'s (coarser or equal) grid, i.e.
+// its synthesis to that level, clamped at 0 (truncation leaves negatives), times the texel's
+// env-weighted BRDF x cos (windowTabulateEnvWeighted). For buildDense.
+wavelet::SquareGrid tracerProductLeaves(const wavelet::SparseHaar& envFactor,
+                                        const wavelet::SquareGrid& brdf);
+
 // Tabulates f(direction) over a window at level m, averaging supersample^2 points per texel.
 template <typename F>
 wavelet::SquareGrid windowTabulate(const wavelet::OctahedralMap& map, ProductWindow window, int m,

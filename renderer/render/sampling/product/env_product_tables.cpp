@@ -205,10 +205,11 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     return p;
 }
 
-int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int envLevel) {
+int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int productLevel,
+                     int envLevel) {
     if (!(policy.refineCellAngle > 0.0) || policy.refineMaxLevels <= 0)
         return 0;
-    const int leafLevel = window.k + policy.productLevel;
+    const int leafLevel = window.k + productLevel;
     double cell = std::sqrt(4.0 * kPi) * std::ldexp(1.0, -leafLevel);
     int levels = 0;
     while (levels < policy.refineMaxLevels && leafLevel + levels < envLevel &&

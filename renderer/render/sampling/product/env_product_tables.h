@@ -58,8 +58,10 @@ struct ProductPolicy {
     int refineMaxLevels = 0;
 };
 
-// How many env levels below the product's leaves over `window` the lobe refinement weights.
-int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int envLevel);
+// How many env levels below the product's leaves over `window` the lobe refinement weights, for
+// a product of 2^productLevel leaves a side (the policy's, or the tracers' coarser one).
+int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int productLevel,
+                     int envLevel);
 
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env);
