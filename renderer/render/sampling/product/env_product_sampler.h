@@ -32,6 +32,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace wavelit::render {
 
@@ -128,24 +129,41 @@ wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, Pro
     int shift = 0;
     while ((1 << shift) < supersample)
         ++shift;
+    const int n = supersample * supersample;
     const double inv = 1.0 / (double(side) * supersample);
+    // The window's origin and side once (toGlobal's arithmetic, hoisted: the tracers' camera
+    // vertex tabulates ~1k points a pixel).
+    const glm::dvec2 origin = window.origin();
+    const double windowSide = window.side();
+    std::vector<double> v(size_t(n), 0.0);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
-            double sum = 0.0, weight = 0.0, plain = 0.0;
+            double plain = 0.0;
+            bool lit = false;
+            for (int j = 0; j < supersample; ++j)
+                for (int i = 0; i < supersample; ++i) {
+                    const glm::dvec2 local((x * supersample + i + 0.5) * inv,
+                                           (y * supersample + j + 0.5) * inv);
+                    const double value = f(env.map().toDirection(0, origin + local * windowSide));
+                    v[size_t(j * supersample + i)] = value;
+                    plain += value;
+                    lit = lit || value != 0.0;
+                }
+            if (!lit) { // 0 whatever the env's weights (a texel below the horizon)
+                grid.at(x, y) = 0.0;
+                continue;
+            }
+            double sum = 0.0, weight = 0.0;
             for (int j = 0; j < supersample; ++j)
                 for (int i = 0; i < supersample; ++i) {
                     int gl, gx, gy;
                     window.globalCell(m + shift, x * supersample + i, y * supersample + j, gl, gx,
                                       gy);
                     const double w = env.cellAverage(gl, gx, gy);
-                    const glm::dvec2 local((x * supersample + i + 0.5) * inv,
-                                           (y * supersample + j + 0.5) * inv);
-                    const double v = f(env.map().toDirection(0, window.toGlobal(local)));
-                    sum += w * v;
+                    sum += w * v[size_t(j * supersample + i)];
                     weight += w;
-                    plain += v;
                 }
-            grid.at(x, y) = weight > 0.0 ? sum / weight : plain / double(supersample * supersample);
+            grid.at(x, y) = weight > 0.0 ? sum / weight : plain / double(n);
         }
     return grid;
 }
