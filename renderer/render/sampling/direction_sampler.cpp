@@ -117,7 +117,12 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
             // the product's leaf masses are those of the product at 2x its resolution.
             const wavelet::SquareGrid brdfGrid =
-                windowTabulateEnvWeighted(env, window, level, brdfCosLocal, 2);
+                windowTabulateEnvWeightedBatch(
+                    env, window, level,
+                    [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
+                        brdfCosLuminance(d, out);
+                    },
+                    2);
             m_product = tracer ? EnvProductSampler::buildDense(
                                      env, window, tracerProductLeaves(tables->envFactor(bin), brdfGrid))
                                : EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
@@ -225,6 +230,33 @@ glm::vec3 DirectionSampler::toShading(const glm::vec3& w) const {
 
 glm::vec3 DirectionSampler::fromShading(const glm::vec3& w) const {
     return w.x * m_point.t + w.y * m_point.b + w.z * m_point.n;
+}
+
+void DirectionSampler::brdfCosLuminance(const std::vector<glm::dvec3>& envLocal,
+                                        std::vector<double>& out) const {
+    // brdfCos's arithmetic, the BRDF evaluated as one batch (a GGX batch computes Lambda(wo) once
+    // and vectorises; its floats are eval's).
+    const SamplerEnvironment& env = m_tables->environment();
+    std::vector<float> x, y, z, r, g, b;
+    std::vector<size_t> above; // indices of the directions above the shading horizon
+    for (size_t i = 0; i < envLocal.size(); ++i) {
+        const glm::vec3 l = toShading(glm::vec3(env.toWorld(envLocal[i])));
+        out[i] = 0.0;
+        if (l.z <= 0.0f)
+            continue;
+        above.push_back(i);
+        x.push_back(l.x);
+        y.push_back(l.y);
+        z.push_back(l.z);
+    }
+    r.resize(above.size());
+    g.resize(above.size());
+    b.resize(above.size());
+    m_material->brdf->evalBatch(m_material->params, m_woLocal,
+                                {x.data(), y.data(), z.data(), above.size()},
+                                {r.data(), g.data(), b.data()});
+    for (size_t k = 0; k < above.size(); ++k)
+        out[above[k]] = double(util::luminance(glm::vec3(r[k], g[k], b[k]) * z[k]));
 }
 
 glm::vec3 DirectionSampler::brdfCos(const glm::vec3& wi) const {

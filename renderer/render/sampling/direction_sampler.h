@@ -137,6 +137,8 @@ private:
                         const glm::dvec3& envLocal) const;
     double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const;
     void addProduct(SamplerKind kind);
+    // Luminance of brdfCos at each ENV-LOCAL direction (out sized alike), the BRDF as a batch.
+    void brdfCosLuminance(const std::vector<glm::dvec3>& envLocal, std::vector<double>& out) const;
     double productLobeMoment() const;
     double bsdfLobeMoment() const;
     double tailEnvMoment(const glm::dvec3& axisLocal, double capAngle) const;

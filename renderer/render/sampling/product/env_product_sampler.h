@@ -120,10 +120,12 @@ wavelet::SquareGrid windowTabulate(const wavelet::OctahedralMap& map, ProductWin
 // sub-cell, c_s its centre; supersample a power of two). Times the env factor's texel average
 // this is the mean of L f over the sub-cells, so the product's leaf masses are those of the
 // product at the sub-cells' resolution, not a product of two averages (which misplaces a sun
-// sitting in the steep part of a lobe).
-template <typename F>
-wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, ProductWindow window,
-                                              int m, F&& f, int supersample = 2) {
+// sitting in the steep part of a lobe). `values(directions, out)` writes f at each ENV-LOCAL
+// direction (out is sized), all sub-cell centres in one call: a BRDF evaluates them as a batch.
+template <typename Values>
+wavelet::SquareGrid windowTabulateEnvWeightedBatch(const SamplerEnvironment& env,
+                                                   ProductWindow window, int m, Values&& values,
+                                                   int supersample = 2) {
     wavelet::SquareGrid grid(m);
     const int side = grid.size();
     int shift = 0;
@@ -131,24 +133,31 @@ wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, Pro
         ++shift;
     const int n = supersample * supersample;
     const double inv = 1.0 / (double(side) * supersample);
-    // The window's origin and side once (toGlobal's arithmetic, hoisted: the tracers' camera
-    // vertex tabulates ~1k points a pixel).
+    // The window's origin and side once (toGlobal's arithmetic, hoisted).
     const glm::dvec2 origin = window.origin();
     const double windowSide = window.side();
-    std::vector<double> v(size_t(n), 0.0);
+    // Sub-cell centres texel by texel, each texel's n in a row.
+    std::vector<glm::dvec3> directions;
+    directions.reserve(size_t(side) * size_t(side) * size_t(n));
     for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
-            double plain = 0.0;
-            bool lit = false;
+        for (int x = 0; x < side; ++x)
             for (int j = 0; j < supersample; ++j)
                 for (int i = 0; i < supersample; ++i) {
                     const glm::dvec2 local((x * supersample + i + 0.5) * inv,
                                            (y * supersample + j + 0.5) * inv);
-                    const double value = f(env.map().toDirection(0, origin + local * windowSide));
-                    v[size_t(j * supersample + i)] = value;
-                    plain += value;
-                    lit = lit || value != 0.0;
+                    directions.push_back(env.map().toDirection(0, origin + local * windowSide));
                 }
+    std::vector<double> v(directions.size(), 0.0);
+    values(directions, v);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const double* f = &v[(size_t(y) * size_t(side) + size_t(x)) * size_t(n)];
+            double plain = 0.0;
+            bool lit = false;
+            for (int s = 0; s < n; ++s) {
+                plain += f[s];
+                lit = lit || f[s] != 0.0;
+            }
             if (!lit) { // 0 whatever the env's weights (a texel below the horizon)
                 grid.at(x, y) = 0.0;
                 continue;
@@ -160,12 +169,25 @@ wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, Pro
                     window.globalCell(m + shift, x * supersample + i, y * supersample + j, gl, gx,
                                       gy);
                     const double w = env.cellAverage(gl, gx, gy);
-                    sum += w * v[size_t(j * supersample + i)];
+                    sum += w * f[j * supersample + i];
                     weight += w;
                 }
             grid.at(x, y) = weight > 0.0 ? sum / weight : plain / double(n);
         }
     return grid;
+}
+
+// windowTabulateEnvWeightedBatch with f(direction) called per direction.
+template <typename F>
+wavelet::SquareGrid windowTabulateEnvWeighted(const SamplerEnvironment& env, ProductWindow window,
+                                              int m, F&& f, int supersample = 2) {
+    return windowTabulateEnvWeightedBatch(
+        env, window, m,
+        [&](const std::vector<glm::dvec3>& directions, std::vector<double>& out) {
+            for (size_t i = 0; i < directions.size(); ++i)
+                out[i] = f(directions[i]);
+        },
+        supersample);
 }
 
 } // namespace wavelit::render
