@@ -182,12 +182,13 @@ TEST(GpuPathTracer, InsideAnEmissiveDiffuseSphereRadianceIsTheGeometricSeries) {
 }
 
 // Glossy sphere on a Lambert ground (4 bounces, roulette) in an env image.
-std::shared_ptr<scene::Scene> glossySphereOnGround(std::shared_ptr<const util::ImageRGB> env) {
+std::shared_ptr<scene::Scene> glossySphereOnGround(std::shared_ptr<const util::ImageRGB> env,
+                                                   float roughness = 0.3f) {
     scene::Material mat;
     mat.id = 1;
     mat.brdf = "ggx";
     mat.baseColor = glm::vec3(0.9f, 0.6f, 0.3f);
-    mat.roughness = 0.3f;
+    mat.roughness = roughness;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 48, 24);
     scene->lighting.environment.image = std::move(env);
     scene->lighting.environment.rotationDeg = 30.0f;
@@ -247,8 +248,9 @@ TEST(GpuPathTracer, MatchesCpuReferenceWithTheSameRandomStreams) {
     env->at(20, 4) = glm::vec3(1e5f);
     auto scene = glossySphereOnGround(env);
     // Every sampler whose GPU form draws as its CPU form does (the same techniques from the same
-    // numbers; `wavelet` and `oracle` build their products differently on the GPU and are judged
-    // statistically in gpu_product_sampler_test.cpp and gpu_sampler_unbiased_test.cpp).
+    // numbers; `wavelet` under a map where it forms products is the next test; `oracle` builds
+    // its product differently on the GPU and is judged statistically in
+    // gpu_product_sampler_test.cpp and gpu_sampler_unbiased_test.cpp).
     for (SamplerKind kind : {SamplerKind::Bsdf, SamplerKind::Uniform, SamplerKind::Cosine,
                              SamplerKind::Env, SamplerKind::Mis})
         expectGpuMatchesCpu(scene, kind);
@@ -263,6 +265,15 @@ TEST(GpuPathTracer, MisRouletteUnderASunMatchesCpu) {
     float c = 0.0f;
     expectGpuMatchesCpu(glossySphereOnGround(sunSky.image), SamplerKind::Mis, &c);
     EXPECT_LT(c, float(kMisEnvRoulette)) << "the scaled constant, not the old one";
+}
+
+// `wavelet` where the sphere keeps its product (a 13-degree sun, a glossy r = 0.2 lobe of
+// comparable extent): both tracers build the kernel's 16^2 product at the camera vertex
+// (ProductBuild::Tracer), so the same numbers draw the same directions.
+TEST(GpuPathTracer, WaveletMatchesCpuWithTheSameRandomStreams) {
+    const scene::Environment sunSky =
+        makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e4, 13.0);
+    expectGpuMatchesCpu(glossySphereOnGround(sunSky.image, 0.2f), SamplerKind::Wavelet);
 }
 
 TEST(GpuPathTracer, ResetAccumulationStartsOver) {
