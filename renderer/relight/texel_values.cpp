@@ -32,12 +32,6 @@ struct DirectionBatch {
     }
 };
 
-// util::Frame::toLocal, inline (the same sums in the same order).
-inline glm::vec3 toLocal(const util::Frame& f, const glm::vec3& w) {
-    return glm::vec3(f.t.x * w.x + f.t.y * w.y + f.t.z * w.z, f.b.x * w.x + f.b.y * w.y + f.b.z * w.z,
-                     f.n.x * w.x + f.n.y * w.y + f.n.z * w.z);
-}
-
 constexpr int kSubCount = TexelDirections::kSub * TexelDirections::kSub;
 
 // toLocal of one texel's kSub^2 sub-directions into the batch's arrays: lane by lane the same
@@ -146,7 +140,7 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
     forEachVisibleTexel(s, [&](size_t t) {
         out.texel[texels] = uint32_t(t);
         dirs.first[texels++] = uint32_t(dirs.size);
-        const glm::vec3 local = toLocal(frame, ctx.dirs->direction(t));
+        const glm::vec3 local = frame.toLocal(ctx.dirs->direction(t));
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
             const size_t at = dirs.size;
             subDirectionsToLocal(frame, ctx.dirs->subX(t), ctx.dirs->subY(t), ctx.dirs->subZ(t), &dirs.x[at],

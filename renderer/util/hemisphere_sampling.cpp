@@ -79,11 +79,4 @@ Frame Frame::fromNormal(const glm::vec3& n) {
     return f;
 }
 
-glm::vec3 Frame::toLocal(const glm::vec3& w) const {
-    return glm::vec3(t.x * w.x + t.y * w.y + t.z * w.z, b.x * w.x + b.y * w.y + b.z * w.z,
-                     n.x * w.x + n.y * w.y + n.z * w.z);
-}
-
-glm::vec3 Frame::toWorld(const glm::vec3& w) const { return w.x * t + w.y * b + w.z * n; }
-
 } // namespace wavelit::util

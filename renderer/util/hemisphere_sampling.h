@@ -35,8 +35,12 @@ glm::vec2 invertUniformHemisphere(const glm::vec3& w);
 struct Frame {
     glm::vec3 t, b, n;
     static Frame fromNormal(const glm::vec3& n);
-    glm::vec3 toLocal(const glm::vec3& w) const;
-    glm::vec3 toWorld(const glm::vec3& w) const;
+    // Inline: the relighting preview and the samplers call these per direction in inner loops.
+    glm::vec3 toLocal(const glm::vec3& w) const {
+        return glm::vec3(t.x * w.x + t.y * w.y + t.z * w.z, b.x * w.x + b.y * w.y + b.z * w.z,
+                         n.x * w.x + n.y * w.y + n.z * w.z);
+    }
+    glm::vec3 toWorld(const glm::vec3& w) const { return w.x * t + w.y * b + w.z * n; }
 };
 
 } // namespace wavelit::util

@@ -8,6 +8,17 @@ namespace {
 
 constexpr double kBelowOne = 0x1.fffffffffffffp-1;
 
+int firstEndingAfter(const double* cdf, int lo, int hi, double u) { // in [lo, hi]: cdf[i + 1] > u
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (cdf[mid + 1] > u)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
 } // namespace
 
 void appendGuidedCdf(const double* w, int n, std::vector<double>& cdf, std::vector<uint32_t>& guide) {
@@ -32,21 +43,6 @@ void appendGuidedCdf(const double* w, int n, std::vector<double>& cdf, std::vect
         guide.push_back(uint32_t(i));
     }
 }
-
-namespace {
-
-int firstEndingAfter(const double* cdf, int lo, int hi, double u) { // in [lo, hi]: cdf[i + 1] > u
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (cdf[mid + 1] > u)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return lo;
-}
-
-} // namespace
 
 int pickGuidedCdf(const double* cdf, const uint32_t* guide, int n, double& u) {
     const int k = std::min(int(u * double(n)), n - 1);
