@@ -95,8 +95,9 @@ bool CpuPathTracer::layoutCameraNeeCache() {
             if (!formsCameraProduct(mat)) return 0u;
             const ProductPolicy& policy =
                 m_samplerTables->productTables(size_t(mat.samplerIndex))->policy();
-            return policy.mode == ProductMode::Product ? productEntryBytes(std::min(policy.productLevel, kTracerMaxProductLevel))
-                                                       : kEntryBytes;
+            return policy.mode == ProductMode::Product
+                       ? productEntryBytes(std::min(policy.productLevel, kTracerMaxProductLevel))
+                       : kEntryBytes;
         });
     const uint64_t budget = m_cameraNeeBudget > 0 ? m_cameraNeeBudget : defaultBudgetBytes();
     m_cameraNeeSkipped = fitProductCacheEntries(

@@ -112,21 +112,21 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             const int bin = tables->binOf(axis);
             const ProductWindow window = tables->window(bin);
             const bool tracer = m_build == ProductBuild::Tracer;
-            const int level =
-                tracer ? std::min(policy.productLevel, kTracerMaxProductLevel) : policy.productLevel;
+            const int level = tracer ? std::min(policy.productLevel, kTracerMaxProductLevel)
+                                     : policy.productLevel;
             // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
             // the product's leaf masses are those of the product at 2x its resolution.
-            const wavelet::SquareGrid brdfGrid =
-                windowTabulateEnvWeightedBatch(
-                    env, window, level,
-                    [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
-                        brdfCosLuminance(d, out);
-                    },
-                    2);
-            m_product = tracer ? EnvProductSampler::buildDense(
-                                     env, window, tracerProductLeaves(tables->envFactor(bin), brdfGrid))
-                               : EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
-                                                                brdfGrid, policy.brdfKeep);
+            const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeightedBatch(
+                env, window, level,
+                [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
+                    brdfCosLuminance(d, out);
+                },
+                2);
+            m_product =
+                tracer ? EnvProductSampler::buildDense(
+                             env, window, tracerProductLeaves(tables->envFactor(bin), brdfGrid))
+                       : EnvProductSampler::buildSparse(env, window, tables->envFactor(bin),
+                                                        brdfGrid, policy.brdfKeep);
             if (tracer && !policy.aroundNormal && policy.capHalfAngle < kTracerNarrowLobeCap)
                 bsdfShare = std::max(bsdfShare, kTracerNarrowLobeMixBsdf);
             if (m_product) {
