@@ -20,14 +20,15 @@ using nlohmann::json;
 
 const fs::path kScene = fs::path(WAVELIT_RESOURCE_DIR) / "scenes/glossy_sphere.wlscene";
 
-// Runs the CLI on the glossy sphere with `extra` flags and returns the parsed report.
-json renderReport(const std::string& name, const std::string& extra) {
+// Runs the CLI on `scene` (the glossy sphere) with `extra` flags and returns the parsed report.
+json renderReport(const std::string& name, const std::string& extra,
+                  const fs::path& scene = kScene) {
     const fs::path dir = fs::temp_directory_path() / "wavelit_render_report_test";
     fs::create_directories(dir);
     const fs::path report = dir / (name + ".json");
     fs::remove(report);
     const std::string command = std::string("'") + WAVELIT_CLI_PATH + "' render '" +
-                                kScene.string() + "' -o '" + (dir / (name + ".exr")).string() +
+                                scene.string() + "' -o '" + (dir / (name + ".exr")).string() +
                                 "' --device cpu --width 32 --height 32 --spp 2 " + extra +
                                 " --report '" + report.string() + "' >/dev/null";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
@@ -82,10 +83,15 @@ TEST(RenderReport, WaveletListsEnvAndPerMaterialTablesWithSizesTimesAndReasons) 
                 << m.at("reason");
             EXPECT_EQ(m.at("factorCount").get<int>(), 0);
         }
-        for (const char* key : {"binLevel", "productLevel", "envKeep", "brdfKeep", "factorCount"})
+        for (const char* key : {"binLevel", "productLevel", "tracerProductLevel", "envKeep",
+                                "brdfKeep", "factorCount"})
             EXPECT_TRUE(m.at(key).is_number_integer()) << name << " " << key;
         if (mode == "product") {
             EXPECT_GT(m.at("productLevel").get<int>(), 0) << name;
+            // What the path tracers form per hit: at most the paper build's level.
+            EXPECT_GT(m.at("tracerProductLevel").get<int>(), 0) << name;
+            EXPECT_LE(m.at("tracerProductLevel").get<int>(), m.at("productLevel").get<int>())
+                << name;
             EXPECT_GT(m.at("envKeep").get<int>(), 0) << name;
             EXPECT_GT(m.at("brdfKeep").get<int>(), 0) << name;
             EXPECT_GT(m.at("factorCount").get<int>(), 0) << name;
@@ -108,6 +114,28 @@ TEST(RenderReport, WaveletListsEnvAndPerMaterialTablesWithSizesTimesAndReasons) 
     EXPECT_EQ(rebuilds.at("environmentReuses").get<int>(), 0);
     EXPECT_EQ(rebuilds.at("materialBuilds").get<int>(), products);
     EXPECT_EQ(rebuilds.at("materialReuses").get<int>(), 0);
+}
+
+// The default scene's gold keeps the product (docs/wavelet-sampler.md): its entry says which
+// product the path tracers form per hit, 2^4 dense where the paper's is 2^5; a material without
+// one reports 0.
+TEST(RenderReport, AProductMaterialReportsTheTracersProductLevel) {
+    const fs::path scene = fs::path(WAVELIT_RESOURCE_DIR) / "scenes/ring_on_ground.wlscene";
+    if (!fs::exists(scene))
+        GTEST_SKIP() << scene << " not present";
+    const json r = renderReport("tracer_level", "--sampler wavelet", scene);
+    int products = 0;
+    for (const json& m : r.at("samplerTables").at("materials")) {
+        const int tracer = m.at("tracerProductLevel").get<int>();
+        if (m.at("mode") != "product") {
+            EXPECT_EQ(tracer, 0) << m.at("name");
+            continue;
+        }
+        ++products;
+        EXPECT_EQ(m.at("productLevel").get<int>(), 5) << m.at("name");
+        EXPECT_EQ(tracer, 4) << m.at("name");
+    }
+    EXPECT_GE(products, 1) << "the gold keeps its product";
 }
 
 TEST(RenderReport, MisBuildsTheEnvironmentTablesOnly) {

@@ -22,6 +22,7 @@
 #include "cli/render_flags.h"
 #include "render/sampling/direction_sampler.h"
 #include "render/reference/outlier_tracer.h"
+#include "render/sampling/sampler_constants.h"
 #include "render/session/render_session.h"
 #include "render/sampling/sampler_tables_cache.h"
 #include "scene/atomic_file.h"
@@ -76,6 +77,13 @@ const char* productModeName(const render::MaterialProductTables* t) {
     return "none";
 }
 
+// The level of the product both path tracers form per hit (ProductBuild::Tracer); 0 without one.
+int tracerProductLevel(const render::MaterialProductTables* t) {
+    if (!t || t->policy().mode != render::ProductMode::Product)
+        return 0;
+    return std::min(t->policy().productLevel, render::kTracerMaxProductLevel);
+}
+
 // The direction samplers' tables (architecture.md §7: what was built for this scene and why), or null
 // when the sampler needs none (`bsdf`) or the integrator reports none. Fields:
 // docs/file-formats.md "Render report".
@@ -110,6 +118,7 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
           << "\", \"mode\": \"" << productModeName(p) << "\", \"reason\": \"" << jsonEscape(reason)
           << "\", \"binLevel\": " << (p ? p->policy().binLevel : 0)
           << ", \"productLevel\": " << (p ? p->policy().productLevel : 0)
+          << ", \"tracerProductLevel\": " << tracerProductLevel(p)
           << ", \"envKeep\": " << (p ? p->policy().envKeep : 0)
           << ", \"brdfKeep\": " << (p ? p->policy().brdfKeep : 0)
           << ", \"factorCount\": " << (p ? p->factorCount() : 0)
