@@ -12,8 +12,31 @@ app.openScene(app.environment("WAVELIT_SOURCE_DIR") + "/tests/ui/data/viewport_p
 app.waitForSamples(1, 300);
 check(app.setCrossFadeMs(600), "setCrossFadeMs");
 var P = null, T = null, samples = [], kinds = [];
-for (var attempt = 0; attempt < 6 && T === null; ++attempt) {
-    P = null; samples = [];
+// What is wrong with a fade from P to T painted as `paints` (empty: nothing). Printed as it goes.
+function fadeProblems(P, T, paints) {
+    var problems = [], n = T.luminance.length;
+    for (var k = 0; k < paints.length; ++k) {
+        var s = paints[k], outside = 0, num = 0, den = 0;
+        for (var i = 0; i < n; ++i) {
+            var p = P.luminance[i], t = T.luminance[i], v = s.luminance[i];
+            if (v < Math.min(p, t) - 1.5 || v > Math.max(p, t) + 1.5) ++outside;
+            num += (v - p) * (t - p); den += (t - p) * (t - p);
+        }
+        var fitted = num / den;
+        console.log("paint " + k + ": opacity " + s.fade.toFixed(3) + ", fitted blend " + fitted.toFixed(3) + ", pixels outside [P, T]: " + outside);
+        if (outside !== 0) problems.push("paint " + k + " is not between the preview and the path-traced image at " + outside + " pixels");
+        if (!(Math.abs(fitted - s.fade) < 0.05)) problems.push("paint " + k + " is not the blend its opacity says: " + fitted + " vs " + s.fade);
+    }
+    return problems;
+}
+// A fade is judged against the last preview frame this script saw. Under load a newer preview can
+// reach the viewport just before the hand-over without this loop seeing it (a CI run saw paint 0
+// at opacity 0.026 fit a blend of 0.125, 93 pixels outside [P, T]); such a fade starts from an
+// image P is not, so it is printed and watched again with a new edit (at most 6 attempts): every
+// fade watched failing still fails the test.
+var problems = ["no fade watched"];
+for (var attempt = 0; attempt < 6 && problems.length > 0; ++attempt) {
+    P = null; T = null; samples = [];
     app.setProperty("light:bulb", "position", [-1.2 + 0.6 * (attempt % 2 == 0 ? 1 : 0), 0.3, 0.0]);
     var deadline = Date.now() + 60000;
     while (Date.now() < deadline) {
@@ -25,6 +48,9 @@ for (var attempt = 0; attempt < 6 && T === null; ++attempt) {
         else if (P === null && f.kind == "pathtraced" && f.spp >= 1 && g.fade < 0) break; // no preview this time
         app.processEvents(15);
     }
+    if (T === null) continue;
+    problems = fadeProblems(P, T, samples);
+    if (problems.length > 0) console.log("attempt " + attempt + ": " + problems.join("; "));
 }
 check(T !== null, "no fade from a preview to the path-traced frame was seen");
 console.log("faded from a " + kinds[0] + " preview; paints during the fade: " + samples.length + ", opacities " +
@@ -38,20 +64,10 @@ for (var i = 0; i < n; ++i) {
 console.log("largest preview/path-traced difference " + maxDiff.toFixed(1) + " (of 255); the end vs the frame's own image: " + finalErr.toFixed(2));
 check(maxDiff > 20, "the preview and the path-traced image hardly differ: nothing to fade");
 check(finalErr <= 1.0, "the fade did not end at the path-traced image: " + finalErr);
+for (var k = 0; k < problems.length; ++k) check(false, problems[k]);
 var inner = 0;
-for (var k = 0; k < samples.length; ++k) {
-    var s = samples[k], outside = 0, num = 0, den = 0;
-    for (var i = 0; i < n; ++i) {
-        var p = P.luminance[i], t = T.luminance[i], v = s.luminance[i];
-        if (v < Math.min(p, t) - 1.5 || v > Math.max(p, t) + 1.5) ++outside;
-        num += (v - p) * (t - p); den += (t - p) * (t - p);
-    }
-    var fitted = num / den;
-    console.log("paint " + k + ": opacity " + s.fade.toFixed(3) + ", fitted blend " + fitted.toFixed(3) + ", pixels outside [P, T]: " + outside);
-    check(outside === 0, "paint " + k + " is not between the preview and the path-traced image at " + outside + " pixels");
-    check(Math.abs(fitted - s.fade) < 0.05, "paint " + k + " is not the blend its opacity says: " + fitted + " vs " + s.fade);
-    if (s.fade > 0.1 && s.fade < 0.9) ++inner;
-}
+for (var k = 0; k < samples.length; ++k)
+    if (samples[k].fade > 0.1 && samples[k].fade < 0.9) ++inner;
 check(inner >= 1, "no paint in the middle of the fade");
 check(app.waitForFrame(10).kind == "pathtraced", "kind after the fade");
 check(app.validationMessages() === 0, "validation messages: " + app.validationMessages());
