@@ -121,8 +121,10 @@ FileActions::FileActions(MainWindow* window)
     connect(window->document(), &SceneDocument::saved, this, [this](const QString& path) { m_recent->add(path); });
     connect(m_render, &RenderToFile::progress, this, [this](double fraction, const QString& text) {
         if (!m_progress) return;
-        m_progress->setValue(int(fraction * 1000.0));
+        // The label first: a modal dialog's setValue() processes events, and the render's queued
+        // `finished` handled there drops m_progress (CI crashed in setLabelText after it).
         m_progress->setLabelText(text);
+        m_progress->setValue(int(fraction * 1000.0));
     });
     connect(m_render, &RenderToFile::finished, this, [this](const QString& path, const QString& error) {
         if (m_progress) {
