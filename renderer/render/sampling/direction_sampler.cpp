@@ -283,11 +283,14 @@ double DirectionSampler::techniquePdf(Technique t, const glm::vec3& wi, const gl
     return 0.0;
 }
 
-double DirectionSampler::mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal) const {
+double DirectionSampler::mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal,
+                                    double productPdf) const {
     const glm::vec3 local = toShading(wi);
     double p = 0.0;
     for (const Component& c : m_components)
-        p += c.weight * techniquePdf(c.technique, wi, local, envLocal);
+        p += c.weight * (c.technique == Technique::Product && productPdf >= 0.0
+                             ? productPdf
+                             : techniquePdf(c.technique, wi, local, envLocal));
     return p;
 }
 
@@ -327,6 +330,7 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
     const SamplerEnvironment& env = m_tables->environment();
     glm::vec3 wi(0.0f);
     std::optional<glm::dvec3> envLocal;
+    double productPdf = -1.0; // known when the product drew
     switch (m_components[pick].technique) {
     case Technique::Uniform:
         wi = fromShading(util::sampleUniformHemisphere({u1, u2}));
@@ -345,20 +349,23 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
     case Technique::Env:
         envLocal = env.sampleLocal(u).direction;
         break;
-    case Technique::Product:
-        envLocal = m_product->sampleLocal(u).direction;
+    case Technique::Product: {
+        const wavelet::DirectionSample s = m_product->sampleLocal(u);
+        envLocal = s.direction;
+        productPdf = s.pdf;
         break;
+    }
     }
     DirectionSample out;
     out.technique = techniqueName(int(m_components[pick].technique));
     if (envLocal) {
         // Tabulated techniques: the product's pdf is evaluated at the double direction that was
-        // drawn. Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a
+        // drawn (when the product drew it, its descent's own pdf, as the kernel does). Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a
         // sun's texel next to sky is 1e6 x denser, so pdf(float wi) there would be a firefly.
         // The env technique's pdf is read at the float wi (pdfWorld), the texel whose radiance
         // the tracer then reads, so L / p_env stays the env integral either way.
         out.wi = glm::vec3(glm::normalize(env.toWorld(*envLocal)));
-        out.pdf = float(mixturePdf(out.wi, *envLocal));
+        out.pdf = float(mixturePdf(out.wi, *envLocal, productPdf));
     } else {
         out.wi = glm::normalize(wi);
         out.pdf = pdf(out.wi);
