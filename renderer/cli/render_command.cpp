@@ -145,6 +145,7 @@ std::string samplerTablesJson(const render::RenderStats& s, const scene::Scene& 
       << ", \"productTables\": " << productCount << "},\n"
       << "    \"rebuilds\": {\"environmentBuilds\": " << r.environmentBuilds
       << ", \"environmentReuses\": " << r.environmentReuses
+      << ", \"environmentRotations\": " << r.environmentRotations
       << ", \"materialBuilds\": " << r.materialBuilds
       << ", \"materialReuses\": " << r.materialReuses << "}\n"
       << "  }";
@@ -157,7 +158,8 @@ std::string updateJson(const render::UpdateCounts& c) {
     std::ostringstream j;
     j << "{\"summary\": \"" << jsonEscape(render::describeUpdate(c)) << "\", \"bvhBuilds\": "
       << c.bvhBuilds << ", \"bvhRefits\": " << c.bvhRefits
-      << ", \"samplerTableBuilds\": " << c.samplerTableBuilds << ", \"uploads\": {\"geometry\": "
+      << ", \"samplerTableBuilds\": " << c.samplerTableBuilds
+      << ", \"samplerTablesTurned\": " << c.samplerTablesTurned << ", \"uploads\": {\"geometry\": "
       << c.geometryUploads << ", \"lights\": " << c.lightUploads << ", \"materials\": "
       << c.materialUploads << ", \"envTexels\": " << c.envTexelUploads
       << ", \"samplerTables\": " << c.samplerTableUploads << ", \"params\": " << c.paramUploads

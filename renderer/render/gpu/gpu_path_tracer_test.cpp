@@ -327,8 +327,9 @@ TEST(GpuPathTracer, SetSceneSwapsDataAndKeepsThePipeline) {
 }
 
 TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
-    // architecture.md §5: object move -> BVH only; env rotation -> env side (and the product tables,
-    // which hold env factors); material edit -> that material's tables.
+    // architecture.md §5: object move -> BVH only; env rotation -> the env tables turned (every
+    // table is env-local: nothing rebuilt, new tables to upload); env intensity -> env side (and
+    // the product tables, which hold env factors); material edit -> that material's tables.
     scene::Material mat;
     mat.id = 1;
     mat.brdf = "ggx";
@@ -373,7 +374,16 @@ TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
 
     auto rotated = std::make_shared<scene::Scene>(*edited);
     rotated->lighting.environment.rotationDeg = 45.0f;
+    const auto beforeRotation = gpu->samplerTables();
     swap(rotated);
+    EXPECT_NE(gpu->samplerTables(), beforeRotation);
+    EXPECT_EQ(gpu->samplerRebuilds().environmentBuilds, 1);
+    EXPECT_EQ(gpu->samplerRebuilds().environmentRotations, 1);
+    EXPECT_EQ(gpu->samplerRebuilds().materialBuilds, 2);
+
+    auto brighter = std::make_shared<scene::Scene>(*rotated);
+    brighter->lighting.environment.intensity = 2.0f;
+    swap(brighter);
     EXPECT_EQ(gpu->samplerRebuilds().environmentBuilds, 2);
     EXPECT_EQ(gpu->samplerRebuilds().materialBuilds, 3);
     EXPECT_EQ(gpu->validationMessageCount(), 0);

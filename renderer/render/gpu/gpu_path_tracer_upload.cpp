@@ -237,6 +237,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     const SamplerTablesRebuilds& after = m_tablesCache.rebuilds();
     c.samplerTableBuilds = (after.environmentBuilds - rebuildsBefore.environmentBuilds) +
                            (after.materialBuilds - rebuildsBefore.materialBuilds);
+    c.samplerTablesTurned = after.environmentRotations - rebuildsBefore.environmentRotations;
     return util::okStatus();
 }
 

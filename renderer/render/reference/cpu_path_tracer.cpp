@@ -118,6 +118,7 @@ util::Status CpuPathTracer::swapScene(std::shared_ptr<const scene::Scene> scene,
     m_lastUpdate = UpdateCounts{};
     m_lastUpdate.samplerTableBuilds = (after.environmentBuilds - before.environmentBuilds) +
                                       (after.materialBuilds - before.materialBuilds);
+    m_lastUpdate.samplerTablesTurned = after.environmentRotations - before.environmentRotations;
     resetAccumulation();
     return util::okStatus();
 }

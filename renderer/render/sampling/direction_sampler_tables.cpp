@@ -9,9 +9,8 @@ namespace {
 // the content). Images: the same pointer, else the same size and texels (a scene copy usually
 // shares the pointer; a reloaded map does not, and comparing ~1e6 texels costs ~1 ms, far less
 // than a rebuild).
-bool sameEnvironment(const scene::Environment& a, const scene::Environment& b) {
-    if (a.path != b.path || a.rotationDeg != b.rotationDeg || a.intensity != b.intensity ||
-        a.tint != b.tint)
+bool sameUpToRotation(const scene::Environment& a, const scene::Environment& b) {
+    if (a.path != b.path || a.intensity != b.intensity || a.tint != b.tint)
         return false;
     if (a.image == b.image)
         return true;
@@ -19,6 +18,10 @@ bool sameEnvironment(const scene::Environment& a, const scene::Environment& b) {
         return false;
     return a.image->width == b.image->width && a.image->height == b.image->height &&
            a.image->pixels == b.image->pixels;
+}
+
+bool sameEnvironment(const scene::Environment& a, const scene::Environment& b) {
+    return a.rotationDeg == b.rotationDeg && sameUpToRotation(a, b);
 }
 
 bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironmentOptions& b) {
@@ -45,18 +48,23 @@ DirectionSamplerTables::build(const scene::Environment& env, std::vector<Sampler
     t->m_kind = kind;
     t->m_source = env;
     t->m_envOptions = envOptions;
-    t->m_envReused = previous && sameEnvironment(previous->m_source, env) &&
-                     sameEnvOptions(previous->m_envOptions, envOptions);
-    t->m_env = t->m_envReused ? previous->m_env
-                              : std::make_shared<const SamplerEnvironment>(
-                                    SamplerEnvironment::build(env, envOptions));
+    const bool sameOptions = previous && sameEnvOptions(previous->m_envOptions, envOptions);
+    t->m_envReused = sameOptions && sameEnvironment(previous->m_source, env);
+    t->m_envRotated = sameOptions && !t->m_envReused && sameUpToRotation(previous->m_source, env);
+    if (t->m_envReused)
+        t->m_env = previous->m_env;
+    else if (t->m_envRotated)
+        t->m_env = std::make_shared<const SamplerEnvironment>(previous->m_env->rotatedTo(env));
+    else
+        t->m_env = std::make_shared<const SamplerEnvironment>(SamplerEnvironment::build(env, envOptions));
     t->m_materials = std::move(materials);
     if (kind != SamplerKind::Wavelet)
         return t;
     for (const SamplerMaterial& m : t->m_materials) {
-        // Product tables are a function of (env, plugin, params): reusable only over the same env.
+        // Product tables are a function of (env, plugin, params), in the env-local frame:
+        // reusable over the same env, turned or not.
         std::shared_ptr<const MaterialProductTables> product;
-        if (t->m_envReused)
+        if (t->m_envReused || t->m_envRotated)
             for (size_t i = 0; i < previous->m_products.size() && !product; ++i)
                 if (sameSampling(previous->m_materials[i], m))
                     product = previous->m_products[i];
@@ -90,7 +98,8 @@ std::string DirectionSamplerTables::report() const {
                   "sampler %s: env octahedral %d^2 (%s), %.1f KiB, built in %.1f ms%s\n",
                   samplerKindName(m_kind), 1 << m_env->level(),
                   m_env->hasLight() ? "lit" : "black", double(m_env->bytes()) / 1024.0,
-                  m_env->buildSeconds() * 1e3, m_envReused ? " (reused)" : "");
+                  m_env->buildSeconds() * 1e3,
+                  m_envReused ? " (reused)" : m_envRotated ? " (the previous, turned)" : "");
     std::string out = line;
     for (size_t i = 0; i < m_products.size(); ++i)
         out += "  material " + m_materials[i].name + ": " + m_products[i]->describe() +

@@ -37,7 +37,8 @@ public:
     // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
     // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
     // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
-    // intensity, tint) with the same envOptions; a material's MaterialProductTables when, in
+    // intensity, tint) with the same envOptions, and a copy turned to the new yaw when only the
+    // rotation differs (every table is env-local); a material's MaterialProductTables when, in
     // addition, some previous material has the same plugin and BrdfParams (the tables depend on
     // the env and on the material only through chooseProductPolicy; comparing the inputs rather
     // than the policy keeps this correct whatever the policy reads). previous may be nullptr.
@@ -58,6 +59,9 @@ public:
     bool anyProduct() const;
     // Whether build() took the piece from `previous` instead of building it (false without one).
     bool environmentReused() const { return m_envReused; }
+    // Whether the env tables are `previous`'s turned to a new rotation (SamplerEnvironment::
+    // rotatedTo): a new object, with every product table reused (they are env-local too).
+    bool environmentRotated() const { return m_envRotated; }
     bool productTablesReused(size_t i) const;
     // Multi-line report: env resolution, per-material choice and reason, bytes, build times
     // (of the build that made each piece; "reused" marks pieces taken from `previous`).
@@ -70,6 +74,7 @@ private:
     // Shared with the tables this one was built from, and with those built from it: immutable.
     std::shared_ptr<const SamplerEnvironment> m_env;
     bool m_envReused = false;
+    bool m_envRotated = false;
     std::vector<SamplerMaterial> m_materials;
     std::vector<std::shared_ptr<const MaterialProductTables>> m_products;
     std::vector<bool> m_productReused;

@@ -154,6 +154,17 @@ SamplerEnvironment SamplerEnvironment::build(const scene::Environment& env,
     return s;
 }
 
+SamplerEnvironment SamplerEnvironment::rotatedTo(const scene::Environment& env) const {
+    util::Timer timer;
+    SamplerEnvironment s = *this;
+    const double yaw = double(env.rotationDeg) * (kPi / 180.0);
+    s.m_cosYaw = double(std::cos(float(yaw))); // as build()
+    s.m_sinYaw = double(std::sin(float(yaw)));
+    s.m_lookup.emplace(env);
+    s.m_buildSeconds = timer.seconds();
+    return s;
+}
+
 double SamplerEnvironment::cellAverage(int l, int x, int y) const {
     if (l > m_level) {
         const int shift = l - m_level;

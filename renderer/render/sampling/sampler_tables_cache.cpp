@@ -101,20 +101,20 @@ util::Result<SceneSamplerTables> SamplerTablesCache::update(
         return out;
     }
     // Keyed by the change set: an unchanged environment is the previous one (the reuse test then
-    // matches on the shared image pointer, with no texel comparison); a changed one is rebuilt,
-    // and with it every product table (they hold environment factors).
+    // matches on the shared image pointer, with no texel comparison); an edited one is compared
+    // field by field: one only turned is the previous turned, its product tables kept (all
+    // env-local); any other change rebuilds it, and with it every product table (they hold
+    // environment factors).
     const DirectionSamplerTables* previous = m_previous.get();
     const scene::Environment* env = &scene.lighting.environment;
-    if (changed && sameKind) {
-        if (touchesEnvironment(*changed))
-            previous = nullptr;
-        else
-            env = &m_previous->sourceEnvironment();
-    }
+    if (changed && sameKind && !touchesEnvironment(*changed))
+        env = &m_previous->sourceEnvironment();
     auto tables = DirectionSamplerTables::build(*env, std::move(materials), kind, previous,
                                                 m_envOptions);
 
-    ++(tables->environmentReused() ? m_rebuilds.environmentReuses : m_rebuilds.environmentBuilds);
+    ++(tables->environmentReused()    ? m_rebuilds.environmentReuses
+       : tables->environmentRotated() ? m_rebuilds.environmentRotations
+                                      : m_rebuilds.environmentBuilds);
     for (size_t i = 0; i < tables->materialCount(); ++i)
         if (tables->productTables(i))
             ++(tables->productTablesReused(i) ? m_rebuilds.materialReuses

@@ -35,6 +35,7 @@ struct SamplerTablesRebuilds {
     int materialBuilds = 0;
     int materialReuses = 0;
     int environmentReuses = 0;
+    int environmentRotations = 0; // the previous env tables turned (an env rotation edit)
 };
 
 struct SceneSamplerTables {

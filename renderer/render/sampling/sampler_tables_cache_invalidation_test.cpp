@@ -55,11 +55,23 @@ TEST(SamplerTablesCache, AnEnvironmentEditRebuildsEnvAndProductTables) {
     SamplerTablesCache cache;
     ASSERT_TRUE(cache.update(s, SamplerKind::Wavelet).ok());
     const scene::EntityRef env{scene::EntityKind::Environment, scene::kInvalidId};
-    const auto changed = invalidationsOf(s, env, "rotation", 30.0f);
+    // A rotation turns the env tables (env-local: nothing is rebuilt) and keeps the product tables.
+    const auto turned = invalidationsOf(s, env, "rotation", 30.0f);
     s.lighting.environment.rotationDeg = 30.0f;
+    auto rotated = cache.update(s, SamplerKind::Wavelet, &turned);
+    ASSERT_TRUE(rotated.ok());
+    EXPECT_FALSE(rotated->tables->environmentReused());
+    EXPECT_TRUE(rotated->tables->environmentRotated());
+    EXPECT_EQ(cache.rebuilds().environmentBuilds, 1);
+    EXPECT_EQ(cache.rebuilds().environmentRotations, 1);
+    EXPECT_EQ(cache.rebuilds().materialBuilds, 1);
+    // An intensity edit rebuilds both.
+    const auto changed = invalidationsOf(s, env, "intensity", 2.0f);
+    s.lighting.environment.intensity = 2.0f;
     auto after = cache.update(s, SamplerKind::Wavelet, &changed);
     ASSERT_TRUE(after.ok());
     EXPECT_FALSE(after->tables->environmentReused());
+    EXPECT_FALSE(after->tables->environmentRotated());
     EXPECT_EQ(cache.rebuilds().environmentBuilds, 2);
     EXPECT_EQ(cache.rebuilds().materialBuilds, 2);
     // A material edit keeps the environment (no env invalidation) and rebuilds that material.

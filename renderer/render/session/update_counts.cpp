@@ -15,6 +15,7 @@ UpdateCounts& UpdateCounts::operator+=(const UpdateCounts& o) {
     samplerTableUploads += o.samplerTableUploads;
     paramUploads += o.paramUploads;
     samplerTableBuilds += o.samplerTableBuilds;
+    samplerTablesTurned += o.samplerTablesTurned;
     return *this;
 }
 
@@ -27,6 +28,8 @@ std::string describeUpdate(const UpdateCounts& c) {
         add(rebuilt, "bvh refit " + std::to_string(c.bvhRefits));
     if (c.samplerTableBuilds)
         add(rebuilt, std::to_string(c.samplerTableBuilds) + " sampler tables");
+    if (c.samplerTablesTurned)
+        add(rebuilt, "env tables turned");
     std::string uploaded;
     const std::vector<std::pair<int, const char*>> kinds = {
         {c.geometryUploads, "geometry"},   {c.lightUploads, "lights"},

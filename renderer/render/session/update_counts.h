@@ -18,6 +18,7 @@ struct UpdateCounts {
     int samplerTableUploads = 0; // direction samplers' tables (env table, materials, words)
     int paramUploads = 0;       // camera and the other scene parameters (one small block)
     int samplerTableBuilds = 0; // environment + material tables built (not reused) by the update
+    int samplerTablesTurned = 0; // env tables turned to a new rotation instead (no rebuild)
 
     UpdateCounts& operator+=(const UpdateCounts& o);
     bool operator==(const UpdateCounts&) const = default;
