@@ -278,6 +278,11 @@ const char* factorKindName(FactorKind kind) {
     return names[size_t(kind)];
 }
 
+bool onlyFactor(const std::vector<Invalidation>& changed, FactorKind kind) {
+    return !changed.empty() && std::all_of(changed.begin(), changed.end(),
+                                           [kind](const Invalidation& i) { return i.factor == kind; });
+}
+
 const std::vector<PropertyInfo>& properties(EntityKind kind) { return registry().at(kind); }
 
 const PropertyInfo* findProperty(EntityKind kind, std::string_view name) {

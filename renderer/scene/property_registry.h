@@ -41,6 +41,10 @@ struct Invalidation {
     auto operator<=>(const Invalidation&) const = default;
 };
 
+// True when `changed` is non-empty and every invalidation is of `kind` (e.g. a light drag: only
+// Light), so whatever depends on the other factors alone may be kept.
+bool onlyFactor(const std::vector<Invalidation>& changed, FactorKind kind);
+
 // Names one entity of a scene. Camera, Environment and Render are singletons: id is ignored.
 struct EntityRef {
     EntityKind kind = EntityKind::Camera;

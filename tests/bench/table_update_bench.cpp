@@ -67,7 +67,8 @@ void BM_EnvIntensityEdit(benchmark::State& state) {
 BENCHMARK(BM_EnvIntensityEdit)->Unit(benchmark::kMillisecond)->Iterations(6);
 
 // applyChanges + renderPass: what the artist waits for after an edit, before the first new frame.
-void sessionEdit(benchmark::State& state, const char* property, float (*valueAt)(int)) {
+void sessionEdit(benchmark::State& state, const char* property, float (*valueAt)(int),
+                 scene::EntityRef ref = {scene::EntityKind::Environment, scene::kInvalidId}) {
     auto loaded = scene::loadScene(kScene);
     if (!loaded) {
         state.SkipWithError(loaded.error().message().c_str());
@@ -83,12 +84,11 @@ void sessionEdit(benchmark::State& state, const char* property, float (*valueAt)
         state.SkipWithError("session failed");
         return;
     }
-    const scene::EntityRef env{scene::EntityKind::Environment, scene::kInvalidId};
     int i = 0;
     for (auto _ : state) {
         scene::ChangeSet changes;
         scene::Scene next = current;
-        if (!changes.setProperty(current, env, property, valueAt(++i)).ok() ||
+        if (!changes.setProperty(current, ref, property, valueAt(++i)).ok() ||
             !changes.apply(next).ok() || !(*session)->applyChanges(next, changes).ok() ||
             !(*session)->renderPass().ok()) {
             state.SkipWithError("edit failed");
@@ -108,6 +108,20 @@ void BM_SessionEnvIntensity(benchmark::State& state) {
     sessionEdit(state, "intensity", [](int i) { return 1.0f + 0.1f * float(i % 7); });
 }
 BENCHMARK(BM_SessionEnvIntensity)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
+
+// The default scene's gold (material 1) and softbox (light 1): the other edit kinds' time to
+// the next frame, for comparison.
+void BM_SessionGoldRoughness(benchmark::State& state) {
+    sessionEdit(state, "roughness", [](int i) { return 0.1f + 0.02f * float(i % 5); },
+                {scene::EntityKind::Material, 1});
+}
+BENCHMARK(BM_SessionGoldRoughness)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
+
+void BM_SessionLightIntensity(benchmark::State& state) {
+    sessionEdit(state, "intensity", [](int i) { return 100.0f + 10.0f * float(i % 5); },
+                {scene::EntityKind::Light, 1});
+}
+BENCHMARK(BM_SessionLightIntensity)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
 
 } // namespace
 

@@ -123,7 +123,8 @@ private:
     // The per-pixel product cache (`wavelet` kernels with the product code; product_cache.h):
     // lays it out for the current scene and camera and uploads the layout, so that the next pass
     // builds the entries (gpu_path_tracer_cache.cpp). Called at a pass's first piece while the
-    // cache is not ready; resetAccumulation (every scene or camera change) makes it not ready.
+    // cache is not ready; resetAccumulation (every scene or camera change) makes it not ready,
+    // except after applyChanges of lights only (the entries do not depend on lights).
     util::Status prepareProductCache();
     // A pass is cut into tiles of kTileGroups x kTileGroups workgroups (16 x 16 pixels), taken
     // in a scattered order (tile i of the order is i * stride mod count) so that every piece

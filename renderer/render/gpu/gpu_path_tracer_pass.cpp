@@ -99,7 +99,8 @@ void GpuPathTracer::resetAccumulation() {
     if (m_groupLayers.handle() != VK_NULL_HANDLE) m_groupLayers.fill(0);
     m_passes = 0;
     m_nextTile = 0; // an unfinished pass is dropped with the sums it had added
-    // Every scene or camera change resets: the cached camera-vertex products are rebuilt.
+    // Every scene or camera change resets: the cached camera-vertex products are rebuilt (a
+    // light-only edit keeps them: applyChanges).
     m_productCacheReady = false;
     m_productCacheBuilding = false;
     m_passElapsed = 0.0;

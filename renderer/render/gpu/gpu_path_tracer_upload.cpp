@@ -271,15 +271,23 @@ util::Status GpuPathTracer::applyChanges(std::shared_ptr<const scene::Scene> sce
     for (const scene::Edit& edit : changes.edits())
         if (const auto* p = std::get_if<scene::PropertyEdit>(&edit))
             mask.envTexels |= p->entity.kind == scene::EntityKind::Environment && p->property == "map";
+    const auto tablesBefore = m_samplerTables.tables;
     auto status = uploadScene(*scene, *bvh, mask, &changed);
     if (!status)
         return status;
+    // The per-pixel product cache depends on the camera, the geometry, the materials and the
+    // sampler tables: an edit of lights only keeps a complete one (a light drag's next frame
+    // skips the cache-building pass).
+    const bool keepProductCache = m_productCacheReady && !mask.geometry &&
+                                  scene::onlyFactor(changed, scene::FactorKind::Light) &&
+                                  m_samplerTables.tables == tablesBefore;
     m_scene = std::move(scene);
     if (mask.geometry)
         m_timings.bvhBuildSeconds = bvh->buildSeconds;
     m_bvh = std::move(bvh);
     m_timings.uploadSeconds = timer.seconds();
     resetAccumulation();
+    m_productCacheReady = keepProductCache;
     return util::okStatus();
 }
 

@@ -103,9 +103,15 @@ util::Status CpuPathTracer::swapScene(std::shared_ptr<const scene::Scene> scene,
     if (!tables)
         return tables.error();
     setSamplerIndices(*materials, tables->samplerIndexOfMaterial);
+    // The camera-vertex cache depends on the camera, the geometry (the centre hits), the
+    // materials and the sampler tables; an edit of lights only (the same BVH and tables) keeps
+    // it, and the materials it points into (equal: no material was edited).
+    const bool keepCameraNee = changed && scene::onlyFactor(*changed, scene::FactorKind::Light) &&
+                               bvh == m_bvh && tables->tables == m_samplerTables;
     m_scene = std::move(scene);
     m_bvh = std::move(bvh);
-    m_materials = std::move(materials.value());
+    if (!keepCameraNee)
+        m_materials = std::move(materials.value());
     // Camera, environment view and lights are a few floats each: rebuilt always (no uploads).
     m_camera = CpuCamera(m_scene->camera, m_options.width, m_options.height);
     m_environment = CpuEnvironment(m_scene->lighting.environment);
@@ -119,7 +125,9 @@ util::Status CpuPathTracer::swapScene(std::shared_ptr<const scene::Scene> scene,
     m_lastUpdate.samplerTableBuilds = (after.environmentBuilds - before.environmentBuilds) +
                                       (after.materialBuilds - before.materialBuilds);
     m_lastUpdate.samplerTablesTurned = after.environmentRotations - before.environmentRotations;
-    resetAccumulation();
+    resetSums();
+    if (!keepCameraNee)
+        dropCameraNee();
     return util::okStatus();
 }
 
@@ -324,12 +332,21 @@ util::Result<std::vector<util::ImageRGB>> CpuPathTracer::groupImages() {
 }
 
 void CpuPathTracer::resetAccumulation() {
+    resetSums();
+    dropCameraNee();
+}
+
+void CpuPathTracer::resetSums() {
     std::fill(m_sum.begin(), m_sum.end(), glm::dvec3(0.0));
     std::fill(m_groupSum.begin(), m_groupSum.end(), glm::dvec3(0.0));
     m_passes = 0;
     m_timings.passSeconds = 0.0;
-    // Every scene, camera or option change resets: the cached camera-vertex products (built for
-    // the old scene's tables and centre hits) are dropped and rebuilt by the next pass.
+}
+
+void CpuPathTracer::dropCameraNee() {
+    // A scene, camera or option change (a light edit aside, swapScene): the cached camera-vertex
+    // products (built for the old scene's tables and centre hits) are dropped and rebuilt by the
+    // next pass.
     m_cameraNeeReady = false;
     m_cameraNeeIndex.clear();
     m_cameraNee.clear();

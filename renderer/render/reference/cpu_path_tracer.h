@@ -131,6 +131,9 @@ private:
     util::Status swapScene(std::shared_ptr<const scene::Scene> scene,
                            std::shared_ptr<const scene::Bvh> bvh,
                            const std::vector<scene::Invalidation>* changed);
+    // resetAccumulation's two halves: the sums, and the camera-vertex cache.
+    void resetSums();
+    void dropCameraNee();
 
     // The direction-sampling step (local shading frame, solid-angle pdf). `ds` is the vertex's
     // DirectionSampler (nullptr for the `bsdf` kind: the plugin samples with u1, u2, u3 unused);
