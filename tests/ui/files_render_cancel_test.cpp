@@ -18,6 +18,19 @@
 using namespace wavelit;
 using namespace wavelit::editor;
 
+constexpr int kTimeoutMs = 240000;
+
+// A 32^2 viewport, one `bsdf` pass: the window's own renderer stays out of the way.
+RenderSettings smallBsdfSettings() {
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 32;
+    settings.sampler = render::SamplerKind::Bsdf;
+    settings.maxSamplesPerPixel = 1;
+    settings.validation = qEnvironmentVariableIntValue("WAVELIT_VK_VALIDATION") == 1;
+    return settings;
+}
+
 class FilesRenderCancelTest : public QObject {
     Q_OBJECT
 private slots:
@@ -26,14 +39,7 @@ private slots:
 };
 
 void FilesRenderCancelTest::cancelStopsAndWritesNothing() {
-    constexpr int kTimeoutMs = 240000;
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
-    settings.sampler = render::SamplerKind::Bsdf;
-    settings.maxSamplesPerPixel = 1;
-    settings.validation = qEnvironmentVariableIntValue("WAVELIT_VK_VALIDATION") == 1;
-    MainWindow window(settings);
+    MainWindow window(smallBsdfSettings());
     window.show();
     window.document()->open(QStringLiteral(WAVELIT_RESOURCE_DIR "/scenes/ring_on_ground.wlscene"));
     QVERIFY(QTest::qWaitFor([&] { return window.document()->scene() != nullptr; }, kTimeoutMs));
@@ -68,14 +74,7 @@ void FilesRenderCancelTest::cancelStopsAndWritesNothing() {
 // The order that crashed, made certain: `finished` is queued first, then a progress update runs
 // synchronously, and the modal dialog's setValue() delivers the queued `finished` inside it.
 void FilesRenderCancelTest::finishedInsideAProgressUpdate() {
-    constexpr int kTimeoutMs = 240000;
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
-    settings.sampler = render::SamplerKind::Bsdf;
-    settings.maxSamplesPerPixel = 1;
-    settings.validation = qEnvironmentVariableIntValue("WAVELIT_VK_VALIDATION") == 1;
-    MainWindow window(settings);
+    MainWindow window(smallBsdfSettings());
     window.show();
     window.document()->open(QStringLiteral(WAVELIT_RESOURCE_DIR "/scenes/ring_on_ground.wlscene"));
     QVERIFY(QTest::qWaitFor([&] { return window.document()->scene() != nullptr; }, kTimeoutMs));
