@@ -138,12 +138,24 @@ void DirectionSampler::addProduct(SamplerKind kind) {
                 const glm::dvec3 bt = env.toLocal(glm::dvec3(m_point.b));
                 const glm::dvec3 nl = env.toLocal(glm::dvec3(m_point.n));
                 m_product->setLobeRefinement(
-                    [=](const glm::dvec3& d) {
-                        const glm::vec3 l(float(glm::dot(d, t)), float(glm::dot(d, bt)),
-                                          float(glm::dot(d, nl)));
-                        if (l.z <= 0.0f)
-                            return 0.0;
-                        return double(util::luminance(brdf->eval(params, woLocal, l) * l.z));
+                    [=](const glm::dvec3 (&d)[4], double (&out)[4]) {
+                        // The directions above the shading horizon as one BRDF batch (its floats
+                        // are eval's); the others weigh 0.
+                        float x[4], y[4], z[4], r[4], g[4], b[4];
+                        int slot[4], n = 0;
+                        for (int c = 0; c < 4; ++c) {
+                            out[c] = 0.0;
+                            const float lz = float(glm::dot(d[c], nl));
+                            if (lz <= 0.0f)
+                                continue;
+                            x[n] = float(glm::dot(d[c], t));
+                            y[n] = float(glm::dot(d[c], bt));
+                            z[n] = lz;
+                            slot[n++] = c;
+                        }
+                        brdf->evalBatch(params, woLocal, {x, y, z, size_t(n)}, {r, g, b});
+                        for (int k = 0; k < n; ++k)
+                            out[slot[k]] = double(util::luminance(glm::vec3(r[k], g[k], b[k]) * z[k]));
                     },
                     lobeRefineLevels(policy, window, level, env.level()));
             }

@@ -113,8 +113,9 @@ void buildProduct(GpuMixture& mix) {
     const SamplerMaterial* material = mix.material;
     const ShadingPoint point = mix.point;
     mix.product->setLobeRefinement(
-        [env, material, point](const glm::dvec3& d) {
-            return brdfCosAt(*material, point, glm::vec3(env->toWorld(d)));
+        [env, material, point](const glm::dvec3 (&d)[4], double (&out)[4]) {
+            for (int c = 0; c < 4; ++c)
+                out[c] = brdfCosAt(*material, point, glm::vec3(env->toWorld(d[c])));
         },
         mix.refineLevels);
 }

@@ -95,8 +95,7 @@ wavelet::SquareCell EnvProductSampler::globalLeaf(wavelet::SquareCell leaf) cons
     return {gl, gx, gy};
 }
 
-void EnvProductSampler::setLobeRefinement(std::function<double(const glm::dvec3&)> brdfCos,
-                                          int levels) {
+void EnvProductSampler::setLobeRefinement(LobeBatch brdfCos, int levels) {
     m_brdfCos = std::move(brdfCos);
     m_refineLevels = m_brdfCos ? std::max(0, levels) : 0;
 }
@@ -108,13 +107,17 @@ int EnvProductSampler::refineStop(const wavelet::SquareCell& cell) const {
 void EnvProductSampler::childWeights(wavelet::SquareCell cell, double w[4]) const {
     const int l = cell.level + 1;
     const double side = std::ldexp(1.0, -l);
-    double h[4], hmax = 0.0;
+    glm::dvec3 centre[4];
     for (int c = 0; c < 4; ++c) {
         const int cx = 2 * cell.x + (c & 1), cy = 2 * cell.y + (c >> 1);
-        h[c] = std::max(0.0, m_brdfCos(m_env->map().toDirection(0, {(cx + 0.5) * side,
-                                                                     (cy + 0.5) * side})));
-        hmax = std::max(hmax, h[c]);
+        centre[c] = m_env->map().toDirection(0, {(cx + 0.5) * side, (cy + 0.5) * side});
         w[c] = m_env->cellAverage(l, cx, cy);
+    }
+    double h[4], hmax = 0.0;
+    m_brdfCos(centre, h);
+    for (int c = 0; c < 4; ++c) {
+        h[c] = std::max(0.0, h[c]);
+        hmax = std::max(hmax, h[c]);
     }
     if (hmax > 0.0 && std::isfinite(hmax))
         for (int c = 0; c < 4; ++c)

@@ -48,10 +48,12 @@ public:
                                                        ProductWindow window,
                                                        const wavelet::SquareGrid& productGrid);
 
-    // brdfCos: luminance of f(wo, wi) cos(theta_i) for an ENV-LOCAL wi (captured by value: the
+    // brdfCos: luminance of f(wo, wi) cos(theta_i) at the four ENV-LOCAL children centres of a
+    // refined cell, in one call (a BRDF batch evaluates them together; captured by value: the
     // sampler may outlive the caller's frame). levels: how many env levels below a product leaf
     // are weighted by it (0: none; never below the env's finest level).
-    void setLobeRefinement(std::function<double(const glm::dvec3&)> brdfCos, int levels);
+    using LobeBatch = std::function<void(const glm::dvec3 (&wi)[4], double (&out)[4])>;
+    void setLobeRefinement(LobeBatch brdfCos, int levels);
     int lobeRefinementLevels() const { return m_refineLevels; }
 
     wavelet::DirectionSample sampleLocal(glm::dvec2 u) const;
@@ -80,7 +82,7 @@ private:
     const SamplerEnvironment* m_env;
     ProductWindow m_window;
     wavelet::HierarchicalSampler m_product;
-    std::function<double(const glm::dvec3&)> m_brdfCos;
+    LobeBatch m_brdfCos;
     int m_refineLevels = 0;
 };
 
