@@ -279,8 +279,9 @@ const char* factorKindName(FactorKind kind) {
 }
 
 bool onlyFactor(const std::vector<Invalidation>& changed, FactorKind kind) {
-    return !changed.empty() && std::all_of(changed.begin(), changed.end(),
-                                           [kind](const Invalidation& i) { return i.factor == kind; });
+    return !changed.empty() &&
+           std::all_of(changed.begin(), changed.end(),
+                       [kind](const Invalidation& i) { return i.factor == kind; });
 }
 
 const std::vector<PropertyInfo>& properties(EntityKind kind) { return registry().at(kind); }

@@ -162,7 +162,8 @@ TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
     for (int i = 0; i < 2; ++i)
         ASSERT_TRUE(gpu->renderPass().ok());
     scene::ChangeSet changes;
-    ASSERT_TRUE(changes.setProperty(*before, {scene::EntityKind::Light, 7}, "intensity", 90.0f).ok());
+    const scene::EntityRef lampRef{scene::EntityKind::Light, 7};
+    ASSERT_TRUE(changes.setProperty(*before, lampRef, "intensity", 90.0f).ok());
     auto after = std::make_shared<scene::Scene>(*before);
     ASSERT_TRUE(changes.apply(*after).ok());
     // The same BVH object, as the session hands it over when no geometry changed.

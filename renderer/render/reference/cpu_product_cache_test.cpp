@@ -225,8 +225,9 @@ TEST(CpuProductCache, KeptAcrossALightEditAndRebuiltAfterACameraEdit) {
     EXPECT_EQ(differingPixels(*tracer, freshImage(moved, 3)), 0u)
         << "the kept cache draws differently from a fresh tracer's";
 
-    const auto turned = applyEdit(*tracer, *moved, bvh, {scene::EntityKind::Camera, scene::kInvalidId},
-                                  "position", glm::vec3(0.3f, 0.2f, 3.2f));
+    const scene::EntityRef camera{scene::EntityKind::Camera, scene::kInvalidId};
+    const auto turned =
+        applyEdit(*tracer, *moved, bvh, camera, "position", glm::vec3(0.3f, 0.2f, 3.2f));
     for (int i = 0; i < 3; ++i)
         ASSERT_TRUE(tracer->renderPass().ok());
     EXPECT_EQ(tracer->productCacheBuilds(), 2u) << "a camera edit must rebuild the cache";

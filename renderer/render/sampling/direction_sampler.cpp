@@ -155,7 +155,8 @@ void DirectionSampler::addProduct(SamplerKind kind) {
                         }
                         brdf->evalBatch(params, woLocal, {x, y, z, size_t(n)}, {r, g, b});
                         for (int k = 0; k < n; ++k)
-                            out[slot[k]] = double(util::luminance(glm::vec3(r[k], g[k], b[k]) * z[k]));
+                            out[slot[k]] =
+                                double(util::luminance(glm::vec3(r[k], g[k], b[k]) * z[k]));
                     },
                     lobeRefineLevels(policy, window, level, env.level()));
             }
@@ -372,8 +373,9 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
     out.technique = techniqueName(int(m_components[pick].technique));
     if (envLocal) {
         // Tabulated techniques: the product's pdf is evaluated at the double direction that was
-        // drawn (when the product drew it, its descent's own pdf, as the kernel does). Rounding it to float can cross into a neighbouring texel (1e-7 of the time); a
-        // sun's texel next to sky is 1e6 x denser, so pdf(float wi) there would be a firefly.
+        // drawn (when the product drew it, its descent's own pdf, as the kernel does). Rounding
+        // it to float can cross into a neighbouring texel (1e-7 of the time); a sun's texel next
+        // to sky is 1e6 x denser, so pdf(float wi) there would be a firefly.
         // The env technique's pdf is read at the float wi (pdfWorld), the texel whose radiance
         // the tracer then reads, so L / p_env stays the env integral either way.
         out.wi = glm::vec3(glm::normalize(env.toWorld(*envLocal)));

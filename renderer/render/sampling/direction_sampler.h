@@ -135,9 +135,11 @@ private:
     glm::vec3 fromShading(const glm::vec3& w) const;
     double techniquePdf(Technique t, const glm::vec3& wi, const glm::vec3& local,
                         const glm::dvec3& envLocal) const;
-    // productPdf >= 0: the product technique's pdf at envLocal, already known (its draw walked the
-    // descent a pdf walk would repeat, BRDF evaluations of the lobe refinement included); < 0: walk.
-    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal, double productPdf = -1.0) const;
+    // productPdf >= 0: the product technique's pdf at envLocal, already known (its draw walked
+    // the descent a pdf walk would repeat, the lobe refinement's BRDF evaluations included);
+    // < 0: walk it.
+    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal,
+                      double productPdf = -1.0) const;
     void addProduct(SamplerKind kind);
     // Luminance of brdfCos at each ENV-LOCAL direction (out sized alike), the BRDF as a batch.
     void brdfCosLuminance(const std::vector<glm::dvec3>& envLocal, std::vector<double>& out) const;

@@ -56,7 +56,8 @@ DirectionSamplerTables::build(const scene::Environment& env, std::vector<Sampler
     else if (t->m_envRotated)
         t->m_env = std::make_shared<const SamplerEnvironment>(previous->m_env->rotatedTo(env));
     else
-        t->m_env = std::make_shared<const SamplerEnvironment>(SamplerEnvironment::build(env, envOptions));
+        t->m_env =
+            std::make_shared<const SamplerEnvironment>(SamplerEnvironment::build(env, envOptions));
     t->m_materials = std::move(materials);
     if (kind != SamplerKind::Wavelet)
         return t;

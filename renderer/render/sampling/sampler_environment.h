@@ -45,7 +45,7 @@ public:
     // These tables under `env`, which differs from the one they were built from only in its
     // rotation: every table lives in the env-local frame (the octahedral map, its pyramid and
     // quadtree, the equirect CDFs are all of the unrotated map), so only the yaw and the
-    // radiance lookup change. Equal to build(env) in content; a copy of ~10 MB, not a rebuild.
+    // radiance lookup change. Equal to build(env) in content; a copy, not a rebuild.
     SamplerEnvironment rotatedTo(const scene::Environment& env) const;
 
     int level() const { return m_level; }

@@ -152,7 +152,8 @@ TEST(SamplerTablesCache, EnvRotationTurnsTheEnvTablesAndKeepsEveryProductTable) 
     SamplerTablesCache freshCache;
     auto fresh = freshCache.update(scene, SamplerKind::Wavelet);
     ASSERT_TRUE(fresh.ok());
-    const SamplerEnvironment &turned = after->tables->environment(), &built = fresh->tables->environment();
+    const SamplerEnvironment& turned = after->tables->environment();
+    const SamplerEnvironment& built = fresh->tables->environment();
     int compared = 0;
     for (int i = 0; i < 64; ++i)
         for (int j = 0; j < 64; ++j) {
@@ -168,9 +169,9 @@ TEST(SamplerTablesCache, EnvRotationTurnsTheEnvTablesAndKeepsEveryProductTable) 
         }
     EXPECT_EQ(compared, 64 * 64);
     // And it is not the unturned tables' answer (the yaw took effect).
-    const glm::vec3 world(turned.toWorld(turned.sampleLocal({0.3, 0.6}).direction));
-    EXPECT_NE(glm::vec3(before->tables->environment().toWorld(turned.sampleLocal({0.3, 0.6}).direction)),
-              world);
+    const glm::dvec3 local = turned.sampleLocal({0.3, 0.6}).direction;
+    EXPECT_NE(glm::vec3(before->tables->environment().toWorld(local)),
+              glm::vec3(turned.toWorld(local)));
 }
 
 // Every field of scene::Environment is an input: each edit rebuilds the env; an equal copy of the
