@@ -22,7 +22,6 @@
 #include "cli/render_flags.h"
 #include "render/sampling/direction_sampler.h"
 #include "render/reference/outlier_tracer.h"
-#include "render/sampling/sampler_constants.h"
 #include "render/session/render_session.h"
 #include "render/sampling/sampler_tables_cache.h"
 #include "scene/atomic_file.h"
@@ -79,9 +78,9 @@ const char* productModeName(const render::MaterialProductTables* t) {
 
 // The level of the product both path tracers form per hit (ProductBuild::Tracer); 0 without one.
 int tracerProductLevel(const render::MaterialProductTables* t) {
-    if (!t || t->policy().mode != render::ProductMode::Product)
-        return 0;
-    return std::min(t->policy().productLevel, render::kTracerMaxProductLevel);
+    return t && t->policy().mode == render::ProductMode::Product
+               ? render::tracerProductLevel(t->policy())
+               : 0;
 }
 
 // The direction samplers' tables (architecture.md §7: what was built for this scene and why), or null

@@ -12,7 +12,6 @@
 #include "render/reference/cpu_surface.h"
 #include "render/reference/product_cache_pixels.h"
 #include "render/sampling/product/env_product_tables.h"
-#include "render/sampling/sampler_constants.h"
 #include "util/hemisphere_sampling.h"
 #include "wavelet/hierarchical_sampler.h"
 #include "util/log.h"
@@ -20,7 +19,6 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -96,7 +94,7 @@ bool CpuPathTracer::layoutCameraNeeCache() {
             const ProductPolicy& policy =
                 m_samplerTables->productTables(size_t(mat.samplerIndex))->policy();
             return policy.mode == ProductMode::Product
-                       ? productEntryBytes(std::min(policy.productLevel, kTracerMaxProductLevel))
+                       ? productEntryBytes(tracerProductLevel(policy))
                        : kEntryBytes;
         });
     const uint64_t budget = m_cameraNeeBudget > 0 ? m_cameraNeeBudget : defaultBudgetBytes();

@@ -112,8 +112,7 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             const int bin = tables->binOf(axis);
             const ProductWindow window = tables->window(bin);
             const bool tracer = m_build == ProductBuild::Tracer;
-            const int level = tracer ? std::min(policy.productLevel, kTracerMaxProductLevel)
-                                     : policy.productLevel;
+            const int level = tracer ? tracerProductLevel(policy) : policy.productLevel;
             // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
             // the product's leaf masses are those of the product at 2x its resolution.
             const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeightedBatch(

@@ -205,6 +205,10 @@ ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::Brdf
     return p;
 }
 
+int tracerProductLevel(const ProductPolicy& policy) {
+    return std::min(policy.productLevel, kTracerMaxProductLevel);
+}
+
 int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int productLevel,
                      int envLevel) {
     if (!(policy.refineCellAngle > 0.0) || policy.refineMaxLevels <= 0)

@@ -63,6 +63,10 @@ struct ProductPolicy {
 int lobeRefineLevels(const ProductPolicy& policy, const ProductWindow& window, int productLevel,
                      int envLevel);
 
+// The level of the product both path tracers form per hit for `policy` (ProductBuild::Tracer):
+// the policy's productLevel capped at sampler_constants.h kTracerMaxProductLevel.
+int tracerProductLevel(const ProductPolicy& policy);
+
 ProductPolicy chooseProductPolicy(const plugins::Brdf& brdf, const plugins::BrdfParams& params,
                                   const SamplerEnvironment& env);
 
