@@ -25,9 +25,8 @@ glm::vec2 CpuEnvironment::equirect(const glm::vec3& dir) const {
     return glm::vec2(u, v);
 }
 
-glm::vec3 CpuEnvironment::radiance(const glm::vec3& dir) const {
+glm::vec3 CpuEnvironment::radianceAt(const glm::vec2& uv) const {
     if (!m_image) return m_scale;
-    glm::vec2 uv = equirect(dir);
     const int w = m_image->width, h = m_image->height;
     // uv ≥ 0 always (atan2 ∈ [−π, π], acos ∈ [0, π]), so int() truncation is a floor; the
     // `> 0` tests also send a NaN direction to texel 0 instead of an undefined conversion.

@@ -21,7 +21,10 @@ public:
 
     // Radiance arriving from world direction `dir` (unit), i.e. seen along a ray leaving the
     // scene in direction dir.
-    glm::vec3 radiance(const glm::vec3& dir) const;
+    glm::vec3 radiance(const glm::vec3& dir) const { return radianceAt(equirect(dir)); }
+    // The same at equirect point uv = equirect(dir), for callers that already have it (the env
+    // technique's pdf reads the same texel: one atan2 and one acos for both).
+    glm::vec3 radianceAt(const glm::vec2& uv) const;
 
     // Equirect coordinates in [0,1]² of a world direction after the yaw rotation.
     glm::vec2 equirect(const glm::vec3& dir) const;

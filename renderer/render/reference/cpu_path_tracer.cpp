@@ -243,7 +243,9 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
     }
     if (scene::occluded(*m_bvh, origin, d.wi, 0.0f, std::numeric_limits<float>::max()))
         return glm::vec3(0.0f);
-    const glm::vec3 Le = m_environment.radiance(d.wi);
+    // The texel whose pdf the draw read (SamplerEnvironment::equirect is this lookup's twin).
+    const glm::vec3 Le =
+        d.envUv.x >= 0.0f ? m_environment.radianceAt(d.envUv) : m_environment.radiance(d.wi);
     const glm::vec3 value = f * Le * scale;
     if (events && value != glm::vec3(0.0f)) {
         PathEvent e;

@@ -88,12 +88,14 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         if (!found) {
             // Direct env light was estimated at the previous vertex by NEE: weight the
             // continuation's find against it (`env`: NEE alone, so 0).
+            // One equirect point for the radiance and the NEE's env pdf (the same texel).
+            const glm::vec2 envUv = m_environment.equirect(dir);
             float w = 1.0f, neePdf = 0.0f;
             if (neeOfDir) {
-                neePdf = neeOfDir->pdf(dir);
+                neePdf = neeOfDir->pdf(dir, envUv);
                 w = kind == SamplerKind::Env ? 0.0f : powerWeight(scatterPdfOfDir, neePdf);
             }
-            const glm::vec3 e = m_environment.radiance(dir);
+            const glm::vec3 e = m_environment.radianceAt(envUv);
             L += beta * (w * e);
             splat(m_groups.environmentGroup, beta * (w * e));
             if (record)

@@ -66,8 +66,6 @@ DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, Sampler
         addProduct(kind);
         break;
     }
-    if (m_describe.empty())
-        m_describe = samplerKindName(kind);
 }
 
 void DirectionSampler::addProduct(SamplerKind kind) {
@@ -101,7 +99,7 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             // `mis`'s NEE technique: the env alone (the tracer MIS-weights it against the BSDF
             // continuation, as at a `wavelet` path's deeper vertices).
             m_components = {{Technique::Env, 1.0}};
-            m_describe = "wavelet, env mis: " + policy.reason;
+            m_envMisReason = &policy.reason; // described on demand (describe())
             return;
         }
         bsdfShare = policy.mixBsdf;
@@ -279,7 +277,7 @@ glm::vec3 DirectionSampler::brdfCos(const glm::vec3& wi) const {
 }
 
 double DirectionSampler::techniquePdf(Technique t, const glm::vec3& wi, const glm::vec3& local,
-                                      const glm::dvec3& envLocal) const {
+                                      const glm::dvec3& envLocal, glm::vec2& envUv) const {
     switch (t) {
     case Technique::Uniform:
         return util::uniformHemispherePdf(local);
@@ -287,8 +285,10 @@ double DirectionSampler::techniquePdf(Technique t, const glm::vec3& wi, const gl
         return util::cosineHemispherePdf(local);
     case Technique::Bsdf:
         return m_material->brdf->pdf(m_material->params, m_woLocal, local);
-    case Technique::Env:
-        return m_tables->environment().pdfWorld(wi); // the texel the radiance reads at wi
+    case Technique::Env: // the texel the radiance reads at wi
+        if (!(envUv.x >= 0.0f))
+            envUv = m_tables->environment().equirect(wi);
+        return m_tables->environment().pdfUv(envUv);
     case Technique::Product:
         return m_product->pdfLocal(envLocal);
     }
@@ -296,21 +296,27 @@ double DirectionSampler::techniquePdf(Technique t, const glm::vec3& wi, const gl
 }
 
 double DirectionSampler::mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal,
-                                    double productPdf) const {
+                                    double productPdf, glm::vec2& envUv) const {
     const glm::vec3 local = toShading(wi);
     double p = 0.0;
     for (const Component& c : m_components)
         p += c.weight * (c.technique == Technique::Product && productPdf >= 0.0
                              ? productPdf
-                             : techniquePdf(c.technique, wi, local, envLocal));
+                             : techniquePdf(c.technique, wi, local, envLocal, envUv));
     return p;
 }
 
 double DirectionSampler::pdfDouble(const glm::vec3& wi) const {
-    return mixturePdf(wi, m_tables->environment().toLocal(glm::dvec3(wi)));
+    glm::vec2 envUv(-1.0f);
+    return mixturePdf(wi, m_tables->environment().toLocal(glm::dvec3(wi)), -1.0, envUv);
 }
 
 float DirectionSampler::pdf(const glm::vec3& wi) const { return float(pdfDouble(wi)); }
+
+float DirectionSampler::pdf(const glm::vec3& wi, const glm::vec2& envUv) const {
+    glm::vec2 uv = envUv;
+    return float(mixturePdf(wi, m_tables->environment().toLocal(glm::dvec3(wi)), -1.0, uv));
+}
 
 namespace {
 const char* techniqueName(int t) {
@@ -323,9 +329,10 @@ std::vector<ComponentPdf> DirectionSampler::componentPdfs(const glm::vec3& wi) c
     const glm::vec3 local = toShading(wi);
     const glm::dvec3 envLocal = m_tables->environment().toLocal(glm::dvec3(wi));
     std::vector<ComponentPdf> out;
+    glm::vec2 envUv(-1.0f);
     for (const Component& c : m_components)
         out.push_back({techniqueName(int(c.technique)), c.weight,
-                       techniquePdf(c.technique, wi, local, envLocal)});
+                       techniquePdf(c.technique, wi, local, envLocal, envUv)});
     return out;
 }
 
@@ -378,15 +385,21 @@ DirectionSample DirectionSampler::sample(float u1, float u2, float u3) const {
         // The env technique's pdf is read at the float wi (pdfWorld), the texel whose radiance
         // the tracer then reads, so L / p_env stays the env integral either way.
         out.wi = glm::vec3(glm::normalize(env.toWorld(*envLocal)));
-        out.pdf = float(mixturePdf(out.wi, *envLocal, productPdf));
+        out.pdf = float(mixturePdf(out.wi, *envLocal, productPdf, out.envUv));
     } else {
         out.wi = glm::normalize(wi);
-        out.pdf = pdf(out.wi);
+        out.pdf = float(mixturePdf(out.wi, env.toLocal(glm::dvec3(out.wi)), -1.0, out.envUv));
     }
     out.valid = std::isfinite(out.wi.x) && out.pdf > 0.0f && std::isfinite(out.pdf);
     return out;
 }
 
-std::string DirectionSampler::describe() const { return m_describe; }
+std::string DirectionSampler::describe() const {
+    // The plain kinds name themselves here, not in the constructor: the tracers build one sampler
+    // per vertex and almost never ask (a string per vertex was ~3% of a `mis` pass).
+    if (m_envMisReason)
+        return "wavelet, env mis: " + *m_envMisReason;
+    return m_describe.empty() ? std::string(samplerKindName(m_kind)) : m_describe;
+}
 
 } // namespace wavelit::render

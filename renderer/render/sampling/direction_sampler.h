@@ -85,6 +85,10 @@ struct DirectionSample {
     float pdf = 0.0f; // solid angle
     bool valid = false;
     const char* technique = ""; // the mixture component that drew wi (for path records)
+    // Where the mixture has the env technique: the equirect point of wi whose texel its pdf read
+    // (SamplerEnvironment::equirect), so that the tracer reads the radiance there without a
+    // second atan2 and acos (CpuEnvironment::radianceAt). Negative: not computed.
+    glm::vec2 envUv{-1.0f};
 };
 
 // One mixture component's share and pdf at a direction (path records, issue 20).
@@ -111,6 +115,9 @@ public:
 
     DirectionSample sample(float u1, float u2, float u3) const;
     float pdf(const glm::vec3& wi) const;
+    // The same, given wi's equirect point envUv (SamplerEnvironment::equirect(wi)), which the
+    // caller also reads the radiance at.
+    float pdf(const glm::vec3& wi, const glm::vec2& envUv) const;
     double pdfDouble(const glm::vec3& wi) const;
     // Every component's share and own pdf at world direction wi (sum of weight x pdf = pdf(wi)).
     std::vector<ComponentPdf> componentPdfs(const glm::vec3& wi) const;
@@ -133,13 +140,14 @@ private:
     };
     glm::vec3 toShading(const glm::vec3& w) const;
     glm::vec3 fromShading(const glm::vec3& w) const;
+    // envUv: wi's equirect point if known (x >= 0), else set here when the env technique needs it.
     double techniquePdf(Technique t, const glm::vec3& wi, const glm::vec3& local,
-                        const glm::dvec3& envLocal) const;
+                        const glm::dvec3& envLocal, glm::vec2& envUv) const;
     // productPdf >= 0: the product technique's pdf at envLocal, already known (its draw walked
     // the descent a pdf walk would repeat, the lobe refinement's BRDF evaluations included);
     // < 0: walk it.
-    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal,
-                      double productPdf = -1.0) const;
+    double mixturePdf(const glm::vec3& wi, const glm::dvec3& envLocal, double productPdf,
+                      glm::vec2& envUv) const;
     void addProduct(SamplerKind kind);
     // Luminance of brdfCos at each ENV-LOCAL direction (out sized alike), the BRDF as a batch.
     void brdfCosLuminance(const std::vector<glm::dvec3>& envLocal, std::vector<double>& out) const;
@@ -156,6 +164,7 @@ private:
     std::vector<Component> m_components;
     std::optional<EnvProductSampler> m_product;
     std::string m_describe;
+    const std::string* m_envMisReason = nullptr; // the tables' policy reason (EnvMis)
 };
 
 } // namespace wavelit::render

@@ -30,9 +30,11 @@ EquirectEnvSampler EquirectEnvSampler::build(const scene::Environment& env) {
     s.m_columnCdf.reserve(size_t(h) * size_t(w + 1));
     s.m_columnGuide.reserve(size_t(h) * size_t(w));
     s.m_rowOmega.resize(size_t(h));
+    s.m_rowCos.resize(size_t(h));
     for (int y = 0; y < h; ++y) {
         const double omega = texelRowSolidAngle(y, w, h);
         s.m_rowOmega[size_t(y)] = omega;
+        s.m_rowCos[size_t(y)] = std::cos(kPi * y / h);
         double mass = 0.0;
         for (int x = 0; x < w; ++x) {
             const glm::vec3 c = glm::max((image ? env.image->at(x, y) : glm::vec3(1.0f)) * scale,
@@ -64,7 +66,9 @@ double EquirectEnvSampler::texelPdf(int x, int y) const {
 
 size_t EquirectEnvSampler::bytes() const {
     return (m_rowGuide.size() + m_columnGuide.size()) * sizeof(uint32_t) +
-           (m_rowCdf.size() + m_columnCdf.size() + m_rowOmega.size() + m_pdf.size()) * sizeof(double);
+           (m_rowCdf.size() + m_columnCdf.size() + m_rowOmega.size() + m_rowCos.size() +
+            m_pdf.size()) *
+               sizeof(double);
 }
 
 glm::dvec3 EquirectEnvSampler::sampleLocal(glm::dvec2 u, double& pdf) const {
@@ -72,7 +76,7 @@ glm::dvec3 EquirectEnvSampler::sampleLocal(glm::dvec2 u, double& pdf) const {
     const int x = pickGuidedCdf(&m_columnCdf[size_t(y) * size_t(m_width + 1)],
                                 &m_columnGuide[size_t(y) * size_t(m_width)], m_width, u.x);
     // cos theta falls linearly across the row by omega w / (2 pi) (uniform in solid angle).
-    const double c0 = std::cos(kPi * y / m_height);
+    const double c0 = m_rowCos[size_t(y)]; // cos theta at the row's top edge
     const double cosTheta =
         std::clamp(c0 - m_rowOmega[size_t(y)] * m_width / (2.0 * kPi) * u.y, -1.0, 1.0);
     const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));

@@ -55,7 +55,7 @@ public:
 private:
     int m_width = 0, m_height = 0;
     bool m_lit = false;
-    std::vector<double> m_rowCdf, m_columnCdf, m_rowOmega, m_pdf;
+    std::vector<double> m_rowCdf, m_columnCdf, m_rowOmega, m_rowCos, m_pdf;
     std::vector<uint32_t> m_rowGuide, m_columnGuide;
 };
 

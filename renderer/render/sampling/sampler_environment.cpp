@@ -187,12 +187,6 @@ wavelet::DirectionSample SamplerEnvironment::sampleLocal(glm::dvec2 u) const {
     return {d, pdf};
 }
 
-double SamplerEnvironment::pdfWorld(const glm::vec3& wi) const {
-    if (!m_fine)
-        return 0.0;
-    return m_exact.pdfUv(m_lookup->equirect(wi));
-}
-
 size_t SamplerEnvironment::bytes() const {
     size_t b = m_fine ? m_fine->table().size() * sizeof(wavelet::HierarchicalSampler::TableNode) : 0;
     for (const auto& g : m_mips)

@@ -63,7 +63,11 @@ public:
     // The env technique (EquirectEnvSampler) in env-local directions; pdfWorld reads the texel
     // the tracer's radiance lookup reads at world direction wi (CpuEnvironment::equirect).
     wavelet::DirectionSample sampleLocal(glm::dvec2 u) const;
-    double pdfWorld(const glm::vec3& wi) const;
+    double pdfWorld(const glm::vec3& wi) const { return pdfUv(equirect(wi)); }
+    // The same in two steps, for a tracer that reads the radiance at the same uv
+    // (CpuEnvironment::radianceAt).
+    glm::vec2 equirect(const glm::vec3& wi) const { return m_lookup->equirect(wi); }
+    double pdfUv(const glm::vec2& uv) const { return m_fine ? m_exact.pdfUv(uv) : 0.0; }
     double pdfLocal(const glm::dvec3& local) const { return pdfWorld(glm::vec3(toWorld(local))); }
     const EquirectEnvSampler& exact() const { return m_exact; }
     // (integral of L)^2 / integral of L^2 over the sphere, in sr, on the conservative luminance
