@@ -279,9 +279,15 @@ const char* factorKindName(FactorKind kind) {
 }
 
 bool onlyFactor(const std::vector<Invalidation>& changed, FactorKind kind) {
-    return !changed.empty() &&
-           std::all_of(changed.begin(), changed.end(),
-                       [kind](const Invalidation& i) { return i.factor == kind; });
+    return onlyFactors(changed, {kind});
+}
+
+bool onlyFactors(const std::vector<Invalidation>& changed,
+                 std::initializer_list<FactorKind> kinds) {
+    const auto listed = [&](const Invalidation& i) {
+        return std::find(kinds.begin(), kinds.end(), i.factor) != kinds.end();
+    };
+    return !changed.empty() && std::all_of(changed.begin(), changed.end(), listed);
 }
 
 const std::vector<PropertyInfo>& properties(EntityKind kind) { return registry().at(kind); }

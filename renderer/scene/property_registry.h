@@ -11,6 +11,7 @@
 #include "util/result.h"
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +45,9 @@ struct Invalidation {
 // True when `changed` is non-empty and every invalidation is of `kind` (e.g. a light drag: only
 // Light), so whatever depends on the other factors alone may be kept.
 bool onlyFactor(const std::vector<Invalidation>& changed, FactorKind kind);
+// The same for a set of kinds: every invalidation is of one of them.
+bool onlyFactors(const std::vector<Invalidation>& changed,
+                 std::initializer_list<FactorKind> kinds);
 
 // Names one entity of a scene. Camera, Environment and Render are singletons: id is ignored.
 struct EntityRef {

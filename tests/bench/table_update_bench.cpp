@@ -1,6 +1,7 @@
 // What an environment edit costs the path tracer's sampler tables (SamplerTablesCache::update,
-// `wavelet`, the default scene): a rotation (the env tables turned, product tables kept) against
-// an intensity change (env and every product table rebuilt); and an edit's time to the next
+// `wavelet`, the default scene): a rotation (the env tables turned, product tables kept), an
+// intensity change (every table kept: they are built at intensity 1) and a tint change (env and
+// every product table rebuilt); and an edit's time to the next
 // frame through a render session (applyChanges + one pass at 256^2, lavapipe and the C++ tracer).
 // Run from the build tree:  tests/bench/table_update_bench
 #include "render/sampling/sampler_tables_cache.h"
@@ -16,11 +17,12 @@
 namespace {
 
 using namespace wavelit;
+using Value = scene::PropertyValue;
 
 const std::string kScene = std::string(WAVELIT_RESOURCE_DIR) + "/scenes/ring_on_ground.wlscene";
 
 // One env property edited by `step` per iteration through a warm cache, with its change set.
-void envEdit(benchmark::State& state, const char* property, float (*valueAt)(int)) {
+void envEdit(benchmark::State &state, const char *property, Value (*valueAt)(int)) {
     auto loaded = scene::loadScene(kScene);
     if (!loaded) {
         state.SkipWithError(loaded.error().message().c_str());
@@ -50,24 +52,33 @@ void envEdit(benchmark::State& state, const char* property, float (*valueAt)(int
         benchmark::DoNotOptimize(tables);
         current = std::move(next);
     }
-    const render::SamplerTablesRebuilds& r = cache.rebuilds();
+    const render::SamplerTablesRebuilds &r = cache.rebuilds();
     state.counters["envBuilds"] = r.environmentBuilds;
     state.counters["envTurned"] = r.environmentRotations;
     state.counters["materialBuilds"] = r.materialBuilds;
 }
 
-void BM_EnvRotationEdit(benchmark::State& state) {
-    envEdit(state, "rotation", [](int i) { return float(5 * i % 360); });
+void BM_EnvRotationEdit(benchmark::State &state) {
+    envEdit(state, "rotation", [](int i) -> Value { return float(5 * i % 360); });
 }
 BENCHMARK(BM_EnvRotationEdit)->Unit(benchmark::kMillisecond)->Iterations(6);
 
-void BM_EnvIntensityEdit(benchmark::State& state) {
-    envEdit(state, "intensity", [](int i) { return 1.0f + 0.1f * float(i % 7); });
+void BM_EnvIntensityEdit(benchmark::State &state) {
+    envEdit(state, "intensity", [](int i) -> Value { return 1.0f + 0.1f * float(i % 7); });
 }
 BENCHMARK(BM_EnvIntensityEdit)->Unit(benchmark::kMillisecond)->Iterations(6);
 
+Value tintAt(int i) {
+    return glm::vec3(1.0f, 0.9f - 0.05f * float(i % 5), 0.8f);
+}
+
+void BM_EnvTintEdit(benchmark::State &state) {
+    envEdit(state, "tint", tintAt);
+}
+BENCHMARK(BM_EnvTintEdit)->Unit(benchmark::kMillisecond)->Iterations(6);
+
 // applyChanges + renderPass: what the artist waits for after an edit, before the first new frame.
-void sessionEdit(benchmark::State& state, const char* property, float (*valueAt)(int),
+void sessionEdit(benchmark::State &state, const char *property, Value (*valueAt)(int),
                  scene::EntityRef ref = {scene::EntityKind::Environment, scene::kInvalidId}) {
     auto loaded = scene::loadScene(kScene);
     if (!loaded) {
@@ -99,26 +110,31 @@ void sessionEdit(benchmark::State& state, const char* property, float (*valueAt)
     state.SetLabel(state.range(0) == 0 ? "vulkan" : "cpu");
 }
 
-void BM_SessionEnvRotation(benchmark::State& state) {
-    sessionEdit(state, "rotation", [](int i) { return float(5 * i % 360); });
+void BM_SessionEnvRotation(benchmark::State &state) {
+    sessionEdit(state, "rotation", [](int i) -> Value { return float(5 * i % 360); });
 }
 BENCHMARK(BM_SessionEnvRotation)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
 
-void BM_SessionEnvIntensity(benchmark::State& state) {
-    sessionEdit(state, "intensity", [](int i) { return 1.0f + 0.1f * float(i % 7); });
+void BM_SessionEnvIntensity(benchmark::State &state) {
+    sessionEdit(state, "intensity", [](int i) -> Value { return 1.0f + 0.1f * float(i % 7); });
 }
 BENCHMARK(BM_SessionEnvIntensity)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
 
+void BM_SessionEnvTint(benchmark::State &state) {
+    sessionEdit(state, "tint", tintAt);
+}
+BENCHMARK(BM_SessionEnvTint)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
+
 // The default scene's gold (material 1) and softbox (light 1): the other edit kinds' time to
 // the next frame, for comparison.
-void BM_SessionGoldRoughness(benchmark::State& state) {
-    sessionEdit(state, "roughness", [](int i) { return 0.1f + 0.02f * float(i % 5); },
+void BM_SessionGoldRoughness(benchmark::State &state) {
+    sessionEdit(state, "roughness", [](int i) -> Value { return 0.1f + 0.02f * float(i % 5); },
                 {scene::EntityKind::Material, 1});
 }
 BENCHMARK(BM_SessionGoldRoughness)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);
 
-void BM_SessionLightIntensity(benchmark::State& state) {
-    sessionEdit(state, "intensity", [](int i) { return 100.0f + 10.0f * float(i % 5); },
+void BM_SessionLightIntensity(benchmark::State &state) {
+    sessionEdit(state, "intensity", [](int i) -> Value { return 100.0f + 10.0f * float(i % 5); },
                 {scene::EntityKind::Light, 1});
 }
 BENCHMARK(BM_SessionLightIntensity)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(4);

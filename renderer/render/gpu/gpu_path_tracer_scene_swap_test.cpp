@@ -67,8 +67,9 @@ TEST(GpuPathTracer, SetSceneSwapsDataAndKeepsThePipeline) {
 
 TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
     // architecture.md §5: object move -> BVH only; env rotation -> the env tables turned (every
-    // table is env-local: nothing rebuilt, new tables to upload); env intensity -> env side (and
-    // the product tables, which hold env factors); material edit -> that material's tables.
+    // table is env-local: nothing rebuilt, new tables to upload); env intensity -> nothing (the
+    // tables are built at intensity 1); env tint -> env side (and the product tables, which hold
+    // env factors); material edit -> that material's tables.
     scene::Material mat;
     mat.id = 1;
     mat.brdf = "ggx";
@@ -122,7 +123,15 @@ TEST(GpuPathTracer, SetSceneRebuildsOnlyTheSamplerTablesAnEditInvalidates) {
 
     auto brighter = std::make_shared<scene::Scene>(*rotated);
     brighter->lighting.environment.intensity = 2.0f;
+    const auto beforeIntensity = gpu->samplerTables();
     swap(brighter);
+    EXPECT_EQ(gpu->samplerTables(), beforeIntensity); // nothing new to upload
+    EXPECT_EQ(gpu->samplerRebuilds().environmentBuilds, 1);
+    EXPECT_EQ(gpu->samplerRebuilds().materialBuilds, 2);
+
+    auto tinted = std::make_shared<scene::Scene>(*brighter);
+    tinted->lighting.environment.tint = glm::vec3(1.0f, 0.5f, 0.25f);
+    swap(tinted);
     EXPECT_EQ(gpu->samplerRebuilds().environmentBuilds, 2);
     EXPECT_EQ(gpu->samplerRebuilds().materialBuilds, 3);
     EXPECT_EQ(gpu->validationMessageCount(), 0);

@@ -276,11 +276,14 @@ util::Status GpuPathTracer::applyChanges(std::shared_ptr<const scene::Scene> sce
     if (!status)
         return status;
     // The per-pixel product cache depends on the camera, the geometry, the materials and the
-    // sampler tables: an edit of lights only keeps a complete one (a light drag's next frame
-    // skips the cache-building pass).
-    const bool keepProductCache = m_productCacheReady && !mask.geometry &&
-                                  scene::onlyFactor(changed, scene::FactorKind::Light) &&
-                                  m_samplerTables.tables == tablesBefore;
+    // sampler tables: an edit of lights, or of the environment that left the tables as they were
+    // (its intensity: tablesEnvironment), keeps a complete one (a light drag's next frame skips
+    // the cache-building pass).
+    using scene::FactorKind;
+    const bool keepProductCache =
+        m_productCacheReady && !mask.geometry &&
+        scene::onlyFactors(changed, {FactorKind::Light, FactorKind::Environment}) &&
+        m_samplerTables.tables == tablesBefore;
     m_scene = std::move(scene);
     if (mask.geometry)
         m_timings.bvhBuildSeconds = bvh->buildSeconds;

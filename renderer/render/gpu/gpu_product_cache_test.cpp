@@ -6,7 +6,7 @@
 // mixtures (cpu_camera_nee.cpp), and the two agree with each other — and (2) be rebuilt after
 // any scene or camera change: the image after setScene equals bit for bit a fresh tracer's on
 // the edited scene; (3) be kept across an edit of lights only (applyChanges), the image again a
-// fresh tracer's bit for bit.
+// fresh tracer's bit for bit, and of the env's intensity (the tables are built at intensity 1).
 #include "render/gpu/gpu_path_tracer_impl.h"
 #include "render/reference/cpu_path_tracer.h"
 #include "render/session/integrator_factory.h"
@@ -146,7 +146,10 @@ TEST(GpuProductCache, RebuiltAfterASceneOrCameraChange) {
     EXPECT_EQ(gpu->validationMessageCount(), 0);
 }
 
-TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
+// One edit through applyChanges after two passes: the cache is kept (one build in all) and the
+// image equals a fresh tracer's on the edited scene.
+void expectCacheKeptAcross(scene::EntityRef ref, const std::string& property,
+                           scene::PropertyValue value) {
     auto before = glossyUnderSun(0.0f);
     scene::Light lamp;
     lamp.id = 7;
@@ -162,8 +165,7 @@ TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
     for (int i = 0; i < 2; ++i)
         ASSERT_TRUE(gpu->renderPass().ok());
     scene::ChangeSet changes;
-    const scene::EntityRef lampRef{scene::EntityKind::Light, 7};
-    ASSERT_TRUE(changes.setProperty(*before, lampRef, "intensity", 90.0f).ok());
+    ASSERT_TRUE(changes.setProperty(*before, ref, property, value).ok());
     auto after = std::make_shared<scene::Scene>(*before);
     ASSERT_TRUE(changes.apply(*after).ok());
     // The same BVH object, as the session hands it over when no geometry changed.
@@ -172,7 +174,7 @@ TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
     ASSERT_TRUE(gpu->applyChanges(after, bvh, changes).ok());
     for (int i = 0; i < 3; ++i)
         ASSERT_TRUE(gpu->renderPass().ok());
-    EXPECT_EQ(tracer->productCacheBuilds(), 1u) << "a light-only edit rebuilt the cache";
+    EXPECT_EQ(tracer->productCacheBuilds(), 1u) << "the " << property << " edit rebuilt the cache";
     auto fresh = makeTracer(after, SamplerKind::Wavelet, DeviceChoice::Vulkan);
     ASSERT_TRUE(fresh);
     for (int i = 0; i < 3; ++i)
@@ -180,6 +182,16 @@ TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
     EXPECT_EQ(differingPixels(*gpu, *fresh), 0u)
         << "the kept cache draws differently from a fresh tracer's";
     EXPECT_EQ(gpu->validationMessageCount(), 0);
+}
+
+TEST(GpuProductCache, KeptAcrossALightOnlyEdit) {
+    expectCacheKeptAcross({scene::EntityKind::Light, 7}, "intensity", 90.0f);
+}
+
+// The sampler tables are built at intensity 1 (tablesEnvironment): an env intensity edit keeps
+// them, and with them the cache.
+TEST(GpuProductCache, KeptAcrossAnEnvironmentIntensityEdit) {
+    expectCacheKeptAcross({scene::EntityKind::Environment, scene::kInvalidId}, "intensity", 0.3f);
 }
 
 } // namespace

@@ -104,10 +104,13 @@ util::Status CpuPathTracer::swapScene(std::shared_ptr<const scene::Scene> scene,
         return tables.error();
     setSamplerIndices(*materials, tables->samplerIndexOfMaterial);
     // The camera-vertex cache depends on the camera, the geometry (the centre hits), the
-    // materials and the sampler tables; an edit of lights only (the same BVH and tables) keeps
-    // it, and the materials it points into (equal: no material was edited).
-    const bool keepCameraNee = changed && scene::onlyFactor(*changed, scene::FactorKind::Light) &&
-                               bvh == m_bvh && tables->tables == m_samplerTables;
+    // materials and the sampler tables; an edit of lights or of the environment that left the
+    // tables as they were (its intensity: tablesEnvironment) keeps it, with the same BVH and
+    // tables, and the materials it points into (equal: no material was edited).
+    using scene::FactorKind;
+    const bool keepCameraNee =
+        changed && scene::onlyFactors(*changed, {FactorKind::Light, FactorKind::Environment}) &&
+        bvh == m_bvh && tables->tables == m_samplerTables;
     m_scene = std::move(scene);
     m_bvh = std::move(bvh);
     if (!keepCameraNee)

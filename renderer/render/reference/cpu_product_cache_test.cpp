@@ -6,8 +6,9 @@
 // the wavelet render's mean equals a converged `bsdf` reference's, also when a memory budget
 // leaves a hashed subset of the pixels out; (3) be built once, and rebuilt after a material or
 // environment edit (or a reset): the image after the edit equals bit for bit a fresh tracer's;
-// (4) be kept across an edit of lights only (the entries depend on camera, geometry, materials
-// and tables), again equal bit for bit to a fresh tracer's image.
+// (4) be kept across an edit of lights or of the env's intensity (the entries depend on camera,
+// geometry, materials and tables, and the tables are built at intensity 1), again equal bit for
+// bit to a fresh tracer's image.
 #include "render/reference/cpu_path_tracer.h"
 
 #include "render/sampling/product/env_product_tables.h"
@@ -199,7 +200,7 @@ std::shared_ptr<const scene::Scene> applyEdit(CpuPathTracer& tracer, const scene
     return after;
 }
 
-TEST(CpuProductCache, KeptAcrossALightEditAndRebuiltAfterACameraEdit) {
+TEST(CpuProductCache, KeptAcrossALightOrEnvIntensityEditAndRebuiltAfterATintOrCameraEdit) {
     auto lit = glossyUnderSun();
     scene::Light lamp;
     lamp.id = 7;
@@ -219,18 +220,29 @@ TEST(CpuProductCache, KeptAcrossALightEditAndRebuiltAfterACameraEdit) {
     const auto brighter = applyEdit(*tracer, *lit, bvh, lampRef, "intensity", 90.0f);
     const auto moved =
         applyEdit(*tracer, *brighter, bvh, lampRef, "position", glm::vec3(-1.0f, 2.5f, 1.0f));
+    // The sampler tables are built at intensity 1 (tablesEnvironment): kept, and the cache too.
+    const scene::EntityRef env{scene::EntityKind::Environment, scene::kInvalidId};
+    const auto dimmer = applyEdit(*tracer, *moved, bvh, env, "intensity", 0.3f);
     for (int i = 0; i < 3; ++i)
         ASSERT_TRUE(tracer->renderPass().ok());
-    EXPECT_EQ(tracer->productCacheBuilds(), 1u) << "a light-only edit rebuilt the cache";
-    EXPECT_EQ(differingPixels(*tracer, freshImage(moved, 3)), 0u)
+    EXPECT_EQ(tracer->productCacheBuilds(), 1u)
+        << "a light or env intensity edit rebuilt the cache";
+    EXPECT_EQ(differingPixels(*tracer, freshImage(dimmer, 3)), 0u)
         << "the kept cache draws differently from a fresh tracer's";
+
+    // A tint changes the luminance the tables follow: new tables, a new cache.
+    const auto tinted = applyEdit(*tracer, *dimmer, bvh, env, "tint", glm::vec3(1.0f, 0.6f, 0.3f));
+    for (int i = 0; i < 3; ++i)
+        ASSERT_TRUE(tracer->renderPass().ok());
+    EXPECT_EQ(tracer->productCacheBuilds(), 2u) << "a tint edit must rebuild the cache";
+    EXPECT_EQ(differingPixels(*tracer, freshImage(tinted, 3)), 0u);
 
     const scene::EntityRef camera{scene::EntityKind::Camera, scene::kInvalidId};
     const auto turned =
-        applyEdit(*tracer, *moved, bvh, camera, "position", glm::vec3(0.3f, 0.2f, 3.2f));
+        applyEdit(*tracer, *tinted, bvh, camera, "position", glm::vec3(0.3f, 0.2f, 3.2f));
     for (int i = 0; i < 3; ++i)
         ASSERT_TRUE(tracer->renderPass().ok());
-    EXPECT_EQ(tracer->productCacheBuilds(), 2u) << "a camera edit must rebuild the cache";
+    EXPECT_EQ(tracer->productCacheBuilds(), 3u) << "a camera edit must rebuild the cache";
     EXPECT_EQ(differingPixels(*tracer, freshImage(turned, 3)), 0u);
 }
 

@@ -1,5 +1,6 @@
 #include "render/sampling/direction_sampler_tables.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace wavelit::render {
@@ -10,7 +11,8 @@ namespace {
 // shares the pointer; a reloaded map does not, and comparing ~1e6 texels costs ~1 ms, far less
 // than a rebuild).
 bool sameUpToRotation(const scene::Environment& a, const scene::Environment& b) {
-    if (a.path != b.path || a.intensity != b.intensity || a.tint != b.tint)
+    if (a.path != b.path || tablesEnvironment(a).intensity != tablesEnvironment(b).intensity ||
+        a.tint != b.tint)
         return false;
     if (a.image == b.image)
         return true;
@@ -29,6 +31,13 @@ bool sameEnvOptions(const SamplerEnvironmentOptions& a, const SamplerEnvironment
 }
 
 } // namespace
+
+scene::Environment tablesEnvironment(const scene::Environment& env) {
+    scene::Environment out = env;
+    if (env.intensity > 0.0f && std::isfinite(env.intensity))
+        out.intensity = 1.0f;
+    return out;
+}
 
 bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b) {
     return a.brdf == b.brdf && a.params == b.params;
@@ -54,10 +63,11 @@ DirectionSamplerTables::build(const scene::Environment& env, std::vector<Sampler
     if (t->m_envReused)
         t->m_env = previous->m_env;
     else if (t->m_envRotated)
-        t->m_env = std::make_shared<const SamplerEnvironment>(previous->m_env->rotatedTo(env));
+        t->m_env = std::make_shared<const SamplerEnvironment>(
+            previous->m_env->rotatedTo(tablesEnvironment(env)));
     else
-        t->m_env =
-            std::make_shared<const SamplerEnvironment>(SamplerEnvironment::build(env, envOptions));
+        t->m_env = std::make_shared<const SamplerEnvironment>(
+            SamplerEnvironment::build(tablesEnvironment(env), envOptions));
     t->m_materials = std::move(materials);
     if (kind != SamplerKind::Wavelet)
         return t;

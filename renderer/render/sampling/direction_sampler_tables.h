@@ -26,6 +26,14 @@ struct SamplerMaterial {
 // label).
 bool sameSampling(const SamplerMaterial& a, const SamplerMaterial& b);
 
+// The environment the tables are built from: `env` at intensity 1 where its intensity is positive
+// (and finite). Everything a sampler reads from the tables is a pdf (normalised: the same at any
+// intensity) or a ratio of env moments (the mixture shares: both sides scale alike), so an
+// intensity edit changes no table, and building them always at 1 makes the kept tables equal, bit
+// for bit, to a fresh build at the new intensity. Intensity 0 (black) and invalid values are
+// kept: no light means no env technique.
+scene::Environment tablesEnvironment(const scene::Environment& env);
+
 class DirectionSamplerTables {
 public:
     // Builds the env tables and, for kind Wavelet, the product tables of every material
@@ -37,7 +45,8 @@ public:
     // The same tables, sharing (not copying) `previous`'s pieces whose inputs are unchanged, so a
     // change set rebuilds only what it invalidates (architecture.md §5): the SamplerEnvironment when
     // `env` equals previous->sourceEnvironment() field for field (path, image content, rotation,
-    // intensity, tint) with the same envOptions, and a copy turned to the new yaw when only the
+    // tint, and intensity as tablesEnvironment sees it: an intensity edit keeps the tables) with
+    // the same envOptions, and a copy turned to the new yaw when only the
     // rotation differs (every table is env-local); a material's MaterialProductTables when, in
     // addition, some previous material has the same plugin and BrdfParams (the tables depend on
     // the env and on the material only through chooseProductPolicy; comparing the inputs rather
@@ -49,6 +58,8 @@ public:
 
     SamplerKind kind() const { return m_kind; }
     const SamplerEnvironment& environment() const { return *m_env; }
+    // The env the tables were built for (their pieces may have been kept since across intensity
+    // edits: tablesEnvironment of it equals that of the current one).
     const scene::Environment& sourceEnvironment() const { return m_source; }
     const SamplerMaterial& material(size_t i) const { return m_materials[i]; }
     size_t materialCount() const { return m_materials.size(); }

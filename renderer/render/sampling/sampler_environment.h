@@ -1,5 +1,7 @@
 // SamplerEnvironment: the environment as the direction samplers of issue 6 see it, built once per
-// environment (rebuilt on env change sets: image, rotation, intensity, tint).
+// environment (rebuilt on env change sets of image and tint, turned on rotations, kept across
+// intensity edits: the tracers build it at intensity 1, direction_sampler_tables.h
+// tablesEnvironment).
 //
 // Holds, in the ENV-LOCAL frame (world rotated by -yaw about +Y, exactly as CpuEnvironment does
 // before its equirect lookup, docs/estimator.md "Environment"):

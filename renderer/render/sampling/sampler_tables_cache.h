@@ -1,8 +1,10 @@
 // SamplerTablesCache: the direction samplers' tables for a scene, kept across edits so each change
 // set rebuilds only what it invalidates (issue 6; architecture.md §5 "Edits reach the renderer as change
 // sets", §7 "Model only what a scene needs"):
-//   environment change (image, rotation, intensity, tint) -> the env tables and every material's
+//   environment change (image, tint)                     -> the env tables and every material's
 //                                                            product tables (they hold env factors)
+//   environment rotation                                 -> the env tables turned, nothing rebuilt
+//   environment intensity                                -> nothing (tables built at intensity 1)
 //   material edit (BRDF, baseColor, roughness)           -> that material's product tables only
 //   object move / mesh change                            -> nothing here (the BVH is the caller's)
 //   material added but used by no object                 -> nothing: unused materials get no tables

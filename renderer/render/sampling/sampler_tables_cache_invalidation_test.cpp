@@ -1,8 +1,9 @@
 // SamplerTablesCache keyed by a change set's invalidations (architecture.md §5.B "What an edit
 // rebuilds"): what is rebuilt follows what the change set says changed, not a comparison of the
 // environment's texels — a light edit hands back the same tables even when the scene's image is
-// another copy of the same texels, and an environment edit rebuilds the env tables and every
-// material's product tables.
+// another copy of the same texels, an env intensity edit keeps them (they are built at intensity
+// 1), and any other environment edit rebuilds the env tables and every material's product tables
+// (a rotation turns them).
 #include "render/sampling/sampler_tables_cache.h"
 
 #include "render/testing/cpu_analytic_scenes.h"
@@ -65,9 +66,17 @@ TEST(SamplerTablesCache, AnEnvironmentEditRebuildsEnvAndProductTables) {
     EXPECT_EQ(cache.rebuilds().environmentBuilds, 1);
     EXPECT_EQ(cache.rebuilds().environmentRotations, 1);
     EXPECT_EQ(cache.rebuilds().materialBuilds, 1);
-    // An intensity edit rebuilds both.
-    const auto changed = invalidationsOf(s, env, "intensity", 2.0f);
+    // An intensity edit keeps both: the same tables.
+    const auto brighter = invalidationsOf(s, env, "intensity", 2.0f);
     s.lighting.environment.intensity = 2.0f;
+    auto kept = cache.update(s, SamplerKind::Wavelet, &brighter);
+    ASSERT_TRUE(kept.ok());
+    EXPECT_EQ(kept->tables, rotated->tables);
+    EXPECT_EQ(cache.rebuilds().environmentBuilds, 1);
+    EXPECT_EQ(cache.rebuilds().materialBuilds, 1);
+    // A tint edit rebuilds both.
+    const auto changed = invalidationsOf(s, env, "tint", glm::vec3(1.0f, 0.5f, 0.25f));
+    s.lighting.environment.tint = glm::vec3(1.0f, 0.5f, 0.25f);
     auto after = cache.update(s, SamplerKind::Wavelet, &changed);
     ASSERT_TRUE(after.ok());
     EXPECT_FALSE(after->tables->environmentReused());

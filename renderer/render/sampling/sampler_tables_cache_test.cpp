@@ -88,6 +88,10 @@ void expectSameAsFreshBuild(const scene::Scene& scene, const SceneSamplerTables&
         for (int x = 0; x < side; ++x)
             ASSERT_EQ(a.environment().cellAverage(a.environment().level(), x, y),
                       b.environment().cellAverage(b.environment().level(), x, y));
+    EXPECT_EQ(a.environment().effectiveSolidAngle(), b.environment().effectiveSolidAngle());
+    EXPECT_TRUE(a.environment().exact().pdfTable() == b.environment().exact().pdfTable());
+    EXPECT_TRUE(a.environment().exact().columnCdf() == b.environment().exact().columnCdf());
+    EXPECT_TRUE(a.environment().exact().rowCdf() == b.environment().exact().rowCdf());
     ASSERT_EQ(a.materialCount(), b.materialCount());
     for (size_t i = 0; i < a.materialCount(); ++i) {
         ASSERT_TRUE(a.productTables(i) && b.productTables(i));
@@ -174,8 +178,27 @@ TEST(SamplerTablesCache, EnvRotationTurnsTheEnvTablesAndKeepsEveryProductTable) 
               glm::vec3(turned.toWorld(local)));
 }
 
+// An intensity edit keeps every table (they are built at intensity 1: tablesEnvironment), and the
+// kept tables are a fresh build's at the new intensity, bit for bit.
+TEST(SamplerTablesCache, EnvIntensityKeepsEveryTableAndTheyAreAFreshBuilds) {
+    scene::Scene scene = testScene();
+    SamplerTablesCache cache;
+    auto before = cache.update(scene, SamplerKind::Wavelet);
+    ASSERT_TRUE(before.ok());
+    for (const float intensity : {3.7f, 1e-3f, 5e4f}) {
+        scene.lighting.environment.intensity = intensity;
+        auto after = cache.update(scene, SamplerKind::Wavelet);
+        ASSERT_TRUE(after.ok());
+        EXPECT_EQ(after->tables, before->tables) << intensity;
+        EXPECT_EQ(cache.rebuilds().environmentBuilds, 1);
+        EXPECT_EQ(cache.rebuilds().materialBuilds, 2);
+        expectSameAsFreshBuild(scene, *after);
+    }
+}
+
 // Every field of scene::Environment is an input: each edit rebuilds the env; an equal copy of the
-// image (another pointer, same texels) does not.
+// image (another pointer, same texels) does not, and neither does a positive intensity (the
+// tables are built at intensity 1: tablesEnvironment); intensity 0 turns the env black.
 TEST(SamplerTablesCache, EveryEnvironmentFieldInvalidatesAndAnEqualImageCopyDoesNot) {
     struct Edit {
         const char* what;
@@ -183,7 +206,8 @@ TEST(SamplerTablesCache, EveryEnvironmentFieldInvalidatesAndAnEqualImageCopyDoes
         bool rebuilds;
     };
     const Edit edits[] = {
-        {"intensity", [](scene::Environment& e) { e.intensity = 2.0f; }, true},
+        {"intensity", [](scene::Environment& e) { e.intensity = 2.0f; }, false},
+        {"intensity 0", [](scene::Environment& e) { e.intensity = 0.0f; }, true},
         {"tint", [](scene::Environment& e) { e.tint = glm::vec3(1.0f, 0.5f, 0.25f); }, true},
         {"path", [](scene::Environment& e) { e.path = "other.exr"; }, true},
         {"one texel",

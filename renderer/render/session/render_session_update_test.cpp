@@ -121,9 +121,12 @@ Expected materialEdit() {
 }
 // Object move: that object's triangles refitted, geometry re-sent; no table changes.
 Expected moveEdit() { return {.bvhRefits = 1, .geometry = 1}; }
-// Environment intensity: parameters and the sampler tables (env + both materials' product
-// tables rebuilt), never the texels.
-Expected environmentEdit() { return {.samplerTables = 1, .params = 1, .tableBuilds = 3}; }
+// Environment intensity: the parameters only. The sampler tables are built at intensity 1
+// (tablesEnvironment), so they are kept, and so is the per-pixel product cache.
+Expected environmentIntensity() { return {.params = 1}; }
+// Environment tint: parameters and the sampler tables (env + both materials' product tables
+// rebuilt: the tint changes the luminance the tables follow), never the texels.
+Expected environmentTint() { return {.samplerTables = 1, .params = 1, .tableBuilds = 3}; }
 // Environment rotation: parameters and the sampler tables, none rebuilt (the env tables turned,
 // the product tables kept: all env-local), never the texels.
 Expected environmentRotation() {
@@ -151,8 +154,12 @@ TEST(RenderSessionUpdate, ObjectMoveRefitsTheBvhOnVulkan) {
 TEST(RenderSessionUpdate, EnvironmentRotationUploadsNoTexelsOnVulkan) {
     checkEdit(DeviceChoice::Vulkan, "rotation", kEnvironment, 90.0f, environmentRotation());
 }
-TEST(RenderSessionUpdate, EnvironmentIntensityUploadsNoTexelsOnVulkan) {
-    checkEdit(DeviceChoice::Vulkan, "intensity", kEnvironment, 2.5f, environmentEdit());
+TEST(RenderSessionUpdate, EnvironmentIntensityUploadsOnlyTheParamsOnVulkan) {
+    checkEdit(DeviceChoice::Vulkan, "intensity", kEnvironment, 2.5f, environmentIntensity());
+}
+TEST(RenderSessionUpdate, EnvironmentTintRebuildsTheTablesButUploadsNoTexelsOnVulkan) {
+    checkEdit(DeviceChoice::Vulkan, "tint", kEnvironment, glm::vec3(1.0f, 0.8f, 0.6f),
+              environmentTint());
 }
 TEST(RenderSessionUpdate, CameraEditUploadsTheParamsOnlyOnVulkan) {
     checkEdit(DeviceChoice::Vulkan, "position", kCamera, glm::vec3(0.5f, 1.5f, 3.0f), cameraEdit());
@@ -164,6 +171,9 @@ TEST(RenderSessionUpdate, EveryEditKindOnTheCpuTracer) {
     checkEdit(DeviceChoice::Cpu, "roughness", kGold, 0.6f, materialEdit());
     checkEdit(DeviceChoice::Cpu, "translation", kRing, glm::vec3(0.3f, 0.2f, -0.2f), moveEdit());
     checkEdit(DeviceChoice::Cpu, "rotation", kEnvironment, 90.0f, environmentRotation());
+    checkEdit(DeviceChoice::Cpu, "intensity", kEnvironment, 2.5f, environmentIntensity());
+    checkEdit(DeviceChoice::Cpu, "tint", kEnvironment, glm::vec3(1.0f, 0.8f, 0.6f),
+              environmentTint());
     checkEdit(DeviceChoice::Cpu, "position", kCamera, glm::vec3(0.5f, 1.5f, 3.0f), cameraEdit());
 }
 
