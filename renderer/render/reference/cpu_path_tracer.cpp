@@ -214,11 +214,12 @@ glm::vec3 CpuPathTracer::nextEvent(const ResolvedMaterial& mat, const util::Fram
 }
 
 glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
-                                      const DirectionSampler& nee, const glm::vec3& wo,
+                                      const DirectionSampler* nee, const glm::vec3& wo,
                                       const glm::vec3& ng, const glm::vec3& origin, float u1,
                                       float u2, float u3, std::vector<PathEvent>* events,
                                       int vertex, const glm::vec3& beta) const {
-    const DirectionSample d = nee.sample(u1, u2, u3);
+    const SamplerEnvironment& env = m_samplerTables->environment();
+    const DirectionSample d = nee ? nee->sample(u1, u2, u3) : sampleEnvTechnique(env, u1, u2);
     if (!d.valid) return glm::vec3(0.0f);
     // The continuation ends paths below the true surface or the shading hemisphere: NEE agrees.
     if (glm::dot(d.wi, ng) <= 0.0f) return glm::vec3(0.0f);
@@ -235,9 +236,9 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
     // is the twin) wherever the NEE is `mis`'s technique: `mis`, and `wavelet` past its product
     // vertices and under the EnvMis policy. u3 its coin: the env technique alone draws no
     // technique with it. c from the env's shape (its effective solid angle), not its intensity.
-    if (m_options.sampler != SamplerKind::Env && nee.envTechniqueOnly()) {
+    if (m_options.sampler != SamplerKind::Env && (!nee || nee->envTechniqueOnly())) {
         const glm::vec3 bf = beta * f;
-        const float c = misEnvRoulette(m_samplerTables->environment().effectiveSolidAngle());
+        const float c = misEnvRoulette(env.effectiveSolidAngle());
         const float p = std::max(bf.r, std::max(bf.g, bf.b)) * wi.z * w / c;
         if (p < 1.0f) {
             if (!(u3 < p)) return glm::vec3(0.0f);
@@ -256,7 +257,10 @@ glm::vec3 CpuPathTracer::envNextEvent(const ResolvedMaterial& mat, const util::F
         e.kind = "env-nee";
         e.technique = d.technique;
         e.pdf = d.pdf;
-        for (const ComponentPdf& c : nee.componentPdfs(d.wi)) {
+        const std::vector<ComponentPdf> components =
+            nee ? nee->componentPdfs(d.wi)
+                : std::vector<ComponentPdf>{{"env", 1.0, env.pdfWorld(d.wi)}};
+        for (const ComponentPdf& c : components) {
             e.misPdfs.push_back({std::string(c.technique), c.pdf});
             e.misPdfs.push_back({"share:" + std::string(c.technique), c.weight});
         }

@@ -161,13 +161,14 @@ private:
                         PathEvent* record = nullptr) const;
 
     // Next-event estimation of DIRECT environment light (issue 20; env, mis, wavelet, oracle):
-    // a direction from the vertex's NEE technique `nee` with (u1, u2, u3), a shadow ray, the env's
+    // a direction from the vertex's NEE technique `nee` with (u1, u2, u3) (nullptr: the env
+    // technique alone, sampleEnvTechnique), a shadow ray, the env's
     // radiance, MIS-weighted against the BSDF continuation (`env`: weight 1). Radiance toward the
     // viewer before the path throughput; with `events`, also records the term (beta: the
     // throughput, for the record and `mis`'s Russian roulette on the shadow ray, whose coin is
     // u3).
     glm::vec3 envNextEvent(const ResolvedMaterial& mat, const util::Frame& frame,
-                           const DirectionSampler& nee, const glm::vec3& wo, const glm::vec3& ng,
+                           const DirectionSampler* nee, const glm::vec3& wo, const glm::vec3& ng,
                            const glm::vec3& origin, float u1, float u2, float u3,
                            std::vector<PathEvent>* events, int vertex,
                            const glm::vec3& beta) const;

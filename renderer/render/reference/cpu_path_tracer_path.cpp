@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 namespace wavelit::render {
 namespace {
@@ -46,6 +47,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
     // path lives in neeStorage.)
     std::optional<DirectionSampler> neeStorage;
     const DirectionSampler* neeOfDir = nullptr;
+    bool envOnlyNeeOfDir = false; // that vertex's NEE was the env technique alone (no sampler)
     // LightMix: each term below is also added to its emitter's group (docs/estimator.md "Light
     // groups"), the same float value that is added to L.
     if (groups) std::fill(groups, groups + m_groups.size(), glm::vec3(0.0f));
@@ -59,15 +61,16 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         record->y = y;
         record->pass = pass;
     }
-    // Path record helpers (no-ops without a record).
-    std::string techniqueOfDir = "camera";
+    // Path record helpers (no-ops without a record; no string is built per path without one).
+    const char* techniqueOfDir = "camera";
     glm::vec3 fcosOfDir(1.0f), betaBeforeDir(1.0f);
-    auto addEvent = [&](int vertex, const char* eventKind, const std::string& technique,
+    auto addEvent = [&](int vertex, const char* eventKind, std::string_view technique,
                         double pdf, std::vector<PathPdf> pdfs, double weight, glm::vec3 fcos,
                         glm::vec3 radiance, glm::vec3 throughput, glm::vec3 contribution) {
         if (!record || contribution == glm::vec3(0.0f)) return;
-        record->events.push_back(PathEvent{vertex, eventKind, technique, pdf, std::move(pdfs),
-                                           weight, fcos, radiance, throughput, contribution});
+        record->events.push_back(PathEvent{vertex, eventKind, std::string(technique), pdf,
+                                           std::move(pdfs), weight, fcos, radiance, throughput,
+                                           contribution});
     };
     for (int depth = 0;; ++depth) {
         const int from = depth - 1; // the vertex that drew `dir`
@@ -91,8 +94,9 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             // One equirect point for the radiance and the NEE's env pdf (the same texel).
             const glm::vec2 envUv = m_environment.equirect(dir);
             float w = 1.0f, neePdf = 0.0f;
-            if (neeOfDir) {
-                neePdf = neeOfDir->pdf(dir, envUv);
+            if (neeOfDir || envOnlyNeeOfDir) {
+                neePdf = neeOfDir ? neeOfDir->pdf(dir, envUv)
+                                  : float(m_samplerTables->environment().pdfUv(envUv));
                 w = kind == SamplerKind::Env ? 0.0f : powerWeight(scatterPdfOfDir, neePdf);
             }
             const glm::vec3 e = m_environment.radianceAt(envUv);
@@ -132,13 +136,19 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         // The vertex's direction sampler: for uniform/cosine it draws the continuation (and its
         // pdf weights the analytic lights); for env/mis/wavelet/oracle it is the env NEE
         // technique (only over an env with light) and the continuation is the plugin's BSDF
-        // sample. `bsdf`: none.
+        // sample. `bsdf`: none. The env technique alone (`mis`, `env`, `wavelet` past its
+        // product vertices) needs no sampler object: sampleEnvTechnique draws what one would, bit
+        // for bit (envOnlyNee).
         std::optional<DirectionSampler> own;
         const DirectionSampler* ds = nullptr;
+        bool envOnlyNee = false;
         if (m_samplerTables && mat.samplerIndex >= 0 &&
             (continuationFromSampler(kind) || (envNee && lit))) {
             const ShadingPoint here{frame.n, frame.t, frame.b, -dir, size_t(mat.samplerIndex)};
-            if (kind == SamplerKind::Wavelet && depth == 0) {
+            if (!continuationFromSampler(kind) &&
+                vertexSamplerKind(kind, depth) == SamplerKind::Env) {
+                envOnlyNee = true;
+            } else if (kind == SamplerKind::Wavelet && depth == 0) {
                 ds = cameraNeeSampler(own, x, y, mat, here);
             } else {
                 own.emplace(*m_samplerTables, vertexSamplerKind(kind, depth), here);
@@ -170,9 +180,9 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
             // NEE technique (docs/estimator.md "Random numbers").
             const auto [ue1, ue2] = rng.next2D();
             const float ue3 = rng.next1D();
-            if (neeSampler) {
+            if (neeSampler || envOnlyNee) {
                 const glm::vec3 e =
-                    envNextEvent(mat, frame, *neeSampler, wo, ng, next, ue1, ue2, ue3,
+                    envNextEvent(mat, frame, neeSampler, wo, ng, next, ue1, ue2, ue3,
                                  vertex ? &record->events : nullptr, depth, beta);
                 L += beta * e;
                 splat(m_groups.environmentGroup, beta * e);
@@ -229,6 +239,7 @@ glm::vec3 CpuPathTracer::samplePixel(int x, int y, int pass, PathRecord* record,
         } else {
             neeOfDir = neeSampler; // a cached entry, or none
         }
+        envOnlyNeeOfDir = envOnlyNee;
 
         origin = next;
         dir = wi;

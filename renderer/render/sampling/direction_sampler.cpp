@@ -36,6 +36,18 @@ SamplerKind vertexSamplerKind(SamplerKind kind, int depth) {
     return kind;
 }
 
+DirectionSample sampleEnvTechnique(const SamplerEnvironment& env, float u1, float u2) {
+    // DirectionSampler::sample's env branch with the one component of weight 1: the mixture pdf
+    // 0 + 1 x p is p exactly.
+    DirectionSample out;
+    out.technique = "env";
+    out.wi = glm::vec3(glm::normalize(env.toWorld(env.sampleLocal(glm::dvec2(u1, u2)).direction)));
+    out.envUv = env.equirect(out.wi);
+    out.pdf = float(env.pdfUv(out.envUv));
+    out.valid = std::isfinite(out.wi.x) && out.pdf > 0.0f && std::isfinite(out.pdf);
+    return out;
+}
+
 DirectionSampler::DirectionSampler(const DirectionSamplerTables& tables, SamplerKind kind,
                                    const ShadingPoint& point, ProductBuild build)
     : m_tables(&tables), m_kind(kind), m_build(build), m_point(point),

@@ -281,6 +281,32 @@ TEST(DirectionSampler, BlackEnvironmentFallsBackToBsdf) {
     }
 }
 
+// The tracers' env-only NEE vertices draw with sampleEnvTechnique instead of building a sampler of
+// kind Env: the same direction, pdf, equirect point and validity bit for bit, and the pdf given
+// that point is the pdf.
+TEST(DirectionSampler, EnvTechniqueAloneDrawsAsTheEnvKindBitForBit) {
+    for (int e = 0; e < kEnvs; ++e) {
+        const auto& tables = tablesFor(e, SamplerKind::Mis);
+        const SamplerEnvironment& env = tables.environment();
+        ASSERT_TRUE(env.hasLight());
+        const DirectionSampler sampler(tables, SamplerKind::Env, shadingPoint(kConfigList[0], 0));
+        util::Pcg32 rng(17);
+        for (int s = 0; s < 4096; ++s) {
+            const float u1 = rng.nextFloat();
+            const float u2 = rng.nextFloat();
+            const DirectionSample a = sampleEnvTechnique(env, u1, u2);
+            const DirectionSample b = sampler.sample(u1, u2, rng.nextFloat());
+            ASSERT_EQ(a.valid, b.valid) << s;
+            ASSERT_EQ(a.wi, b.wi) << s;
+            ASSERT_EQ(a.pdf, b.pdf) << s;
+            ASSERT_EQ(a.envUv, b.envUv) << s;
+            ASSERT_EQ(a.envUv, env.equirect(a.wi)) << s;
+            ASSERT_EQ(sampler.pdf(a.wi, a.envUv), sampler.pdf(a.wi)) << s;
+            ASSERT_EQ(a.pdf, float(env.pdfWorld(a.wi))) << s;
+        }
+    }
+}
+
 TEST(DirectionSampler, KindNamesRoundTrip) {
     for (SamplerKind k : allSamplerKinds()) {
         const auto parsed = parseSamplerKind(std::string(samplerKindName(k)));
