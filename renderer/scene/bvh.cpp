@@ -177,8 +177,8 @@ glm::vec3 vec3Of(const float* v) {
 // Slab test; returns the entry distance or +inf when the box is missed in (tMin, tMax). Inlined
 // into the traversal, where a node's two child tests interleave: as a call it was ~20% of a C++
 // pass (docs/performance.md).
-[[gnu::always_inline]] inline float hitBox(const BvhNode& n, const glm::vec3& o, const glm::vec3& invDir, float tMin,
-             float tMax) {
+[[gnu::always_inline]] inline float hitBox(const BvhNode& n, const glm::vec3& o,
+                                           const glm::vec3& invDir, float tMin, float tMax) {
     glm::vec3 t0 = (vec3Of(n.boundsMin) - o) * invDir;
     glm::vec3 t1 = (vec3Of(n.boundsMax) - o) * invDir;
     glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);

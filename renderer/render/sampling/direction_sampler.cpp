@@ -41,7 +41,8 @@ DirectionSample sampleEnvTechnique(const SamplerEnvironment& env, float u1, floa
     // 0 + 1 x p is p exactly.
     DirectionSample out;
     out.technique = "env";
-    out.wi = glm::vec3(glm::normalize(env.toWorld(env.sampleLocal(glm::dvec2(u1, u2)).direction)));
+    const glm::dvec3 local = env.sampleLocal(glm::dvec2(u1, u2)).direction;
+    out.wi = glm::vec3(glm::normalize(env.toWorld(local)));
     out.envUv = env.equirect(out.wi);
     out.pdf = float(env.pdfUv(out.envUv));
     out.valid = std::isfinite(out.wi.x) && out.pdf > 0.0f && std::isfinite(out.pdf);

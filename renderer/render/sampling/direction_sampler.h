@@ -98,10 +98,10 @@ struct ComponentPdf {
     double pdf; // solid angle, of the component alone
 };
 
-// The `env` technique alone, drawn exactly (bit for bit: wi, pdf, envUv, valid) as a DirectionSampler
-// of kind Env over a lit environment draws it with (u1, u2), without building one: what the
-// tracers' env-only NEE vertices (`mis`, `env`, `wavelet` past its product vertices) draw on
-// every path. Its pdf at a direction is env.pdfUv(env.equirect(wi)).
+// The `env` technique alone, drawn exactly (bit for bit: wi, pdf, envUv, valid) as a
+// DirectionSampler of kind Env over a lit environment draws it with (u1, u2), without building
+// one: what the tracers' env-only NEE vertices (`mis`, `env`, `wavelet` past its product
+// vertices) draw on every path. Its pdf at a direction is env.pdfUv(env.equirect(wi)).
 DirectionSample sampleEnvTechnique(const SamplerEnvironment& env, float u1, float u2);
 
 // How the `wavelet` kind forms its per-point product. Paper: the sparse product of the truncated

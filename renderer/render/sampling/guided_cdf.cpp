@@ -55,7 +55,8 @@ int pickGuidedCdf(const double* cdf, const uint32_t* guide, int n, double& u) {
         // One entry of slack each side: u n rounding may put u just outside [k / n, (k + 1) / n).
         lo = firstEndingAfter(cdf, std::max(int(guide[k]), 1) - 1,
                               std::min(k + 1 < n ? int(guide[k + 1]) + 1 : n - 1, n - 1), u);
-        if (!(cdf[lo] <= u && u < cdf[lo + 1])) lo = firstEndingAfter(cdf, 0, n - 1, u); // never seen
+        if (!(cdf[lo] <= u && u < cdf[lo + 1]))
+            lo = firstEndingAfter(cdf, 0, n - 1, u); // never seen
     }
     const double width = cdf[lo + 1] - cdf[lo];
     u = width > 0.0 ? std::clamp((u - cdf[lo]) / width, 0.0, kBelowOne) : 0.0;
