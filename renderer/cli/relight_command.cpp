@@ -20,8 +20,9 @@
 // against this edit's exact preview (the coarse image with those points stale). A material edit's
 // first answer is instead the full preview's untruncated one (RelightPreview::materialFirstAnswer,
 // docs/relighting.md §7.0g): "firstAnswer": "untruncated", firstPointsTouched — as the editor's
-// coarse-to-fine, only where no edited material's lobe is narrower than a texel, unless
-// --first-untruncated-narrow; with a reference every first answer also has firstRelRMSE.
+// coarse-to-fine; where an edited material's lobe is narrower than a texel it is averaged over
+// 2 x 2 directions a texel, "untruncated, coarse lobes" (§7.0h), unless --first-untruncated-narrow
+// (4 x 4, as the full answer); with a reference every first answer also has firstRelRMSE.
 // --shadow-field: translation drags of the first object the list translates go through its
 // shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
@@ -236,14 +237,18 @@ int runRelight(const std::vector<std::string>& argv) {
             // it (the editor's gets it with the full update), timed on its own (coarseMs).
             util::Timer materialTimer;
             const double materialCpuBefore = processCpuMs();
-            auto material = (*preview)->materialFirstAnswer(scene, edit.changes, !untruncatedNarrow);
+            auto material = (*preview)->materialFirstAnswer(
+                scene, edit.changes,
+                untruncatedNarrow ? relight::LobeAverage::Full : relight::LobeAverage::Coarse);
             if (material) {
                 util::Timer firstTimer;
                 firstImage = relight::nearestScaled(material->image, *width, *height);
                 e["firstImageMs"] = firstTimer.milliseconds();
                 e["firstMs"] = materialTimer.milliseconds();
                 e["firstCpuMs"] = processCpuMs() - materialCpuBefore;
-                e["firstAnswer"] = "untruncated";
+                e["firstAnswer"] = material->coarseLobes
+                                       ? relight::CoarseToFinePreview::kUntruncatedCoarseLobes
+                                       : "untruncated";
                 e["firstPointsTouched"] = material->pointsTouched;
             }
             util::Timer coarseTimer;

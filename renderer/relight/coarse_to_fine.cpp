@@ -39,11 +39,13 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
     // Only material edits since the full preview's state: its visibility stands, so the first
     // answer is its untruncated material answer; the coarse preview takes these edits later.
     util::Timer timer;
-    auto material = m_fine->materialFirstAnswer(edited, merged, /*wideLobesOnly=*/true);
+    // A narrow lobe averaged over 2 x 2 directions a texel instead of 4 x 4: the answer within the
+    // frame budget (docs/relighting.md §7.0h).
+    auto material = m_fine->materialFirstAnswer(edited, merged, LobeAverage::Coarse);
     EditSummary summary;
     if (material) {
         summary.kind = "material";
-        summary.method = "untruncated";
+        summary.method = material->coarseLobes ? kUntruncatedCoarseLobes : "untruncated";
         for (const std::string& name : material->materials) summary.factorsRebuilt.push_back("brdf first answer:" + name);
         summary.pointsTouched = material->pointsTouched;
         summary.pointsMs = timer.milliseconds();

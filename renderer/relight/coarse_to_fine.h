@@ -37,14 +37,16 @@ public:
                                           int pointStride = 1);
 
     // The first answer: `edited` is the scene after `changes`; the full preview is now behind.
-    // While every pending edit is a material edit (a roughness slider) and no edited material's
-    // lobe is narrower than a texel, the first answer is the
+    // While every pending edit is a material edit (a roughness slider), the first answer is the
     // full preview's materialFirstAnswer (relight_preview.h, docs/relighting.md §7.0g: the new
     // material's points summed over the texels without T's Haar transform and top K, the rest
-    // of the image exact) and the coarse preview is left behind by those edits until applyFine
+    // of the image exact; a lobe narrower than a texel averaged over 2 x 2 directions a texel,
+    // §7.0h) and the coarse preview is left behind by those edits until applyFine
     // or the next other edit (which takes them with it); the summary then has kind "material"
-    // and method "untruncated". Otherwise the edit goes to the coarse preview.
+    // and method "untruncated" (kUntruncatedCoarseLobes with a narrow lobe). Otherwise the edit
+    // goes to the coarse preview.
     EditSummary applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes);
+    static constexpr const char* kUntruncatedCoarseLobes = "untruncated, coarse lobes";
     // Brings the full preview up to the newest edited scene with every pending change set merged
     // into one (an empty summary, kind "display", when nothing is pending).
     EditSummary applyFine();

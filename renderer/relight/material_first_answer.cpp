@@ -19,7 +19,7 @@
 namespace wavelit::relight {
 
 std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirstAnswer(
-    const scene::Scene& edited, const scene::ChangeSet& changes, bool wideLobesOnly) const {
+    const scene::Scene& edited, const scene::ChangeSet& changes, LobeAverage narrowLobes) const {
     // Material property edits only, on the same entities: every point's hit and visibility stand.
     if (changes.edits().empty() || edited.objects.size() != m_scene->objects.size() ||
         edited.materials.size() != m_scene->materials.size() ||
@@ -52,7 +52,16 @@ std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirst
     for (const scene::Material& m : edited.materials) materials.push_back(resolveMaterial(m, m_dirs.texelRadius()));
     materials.push_back(m_materials.back()); // the default material
     for (size_t m = 0; m < edited.materials.size(); ++m)
-        if (wideLobesOnly && recompute[m] && materials[m].narrow) return std::nullopt;
+        answer.coarseLobes |= narrowLobes == LobeAverage::Coarse && recompute[m] && materials[m].narrow;
+    if (answer.coarseLobes) {
+        // The walk is ~points x grid texels: past the budget (a 64^2 grid's chrome, ~8x the
+        // bundled gold's 32^2) even the coarse average misses the frame, and the corrected
+        // coarse answer is the first answer instead (nullopt).
+        size_t points = 0;
+        for (const PreviewPoint& p : m_points)
+            points += p.hit && p.material < recompute.size() && recompute[p.material];
+        if (double(points) * double(m_dirs.count()) > kCoarseLobeTexelBudget) return std::nullopt;
+    }
     TransferContext ctx = context();
     ctx.scene = &edited; // the same geometry and lights; its materials
     ctx.materials = &materials;
@@ -78,7 +87,7 @@ std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirst
         const ResolvedMaterial& m = materials[mi];
         if (mi < recompute.size() && recompute[mi]) {
             thread_local PointTerms terms;
-            untruncatedTerms(ctx, p, m_states[i], envTexels, terms);
+            untruncatedTerms(ctx, p, m_states[i], envTexels, terms, narrowLobes);
             answer.image.pixels[i] = lights + m.emission + mixTerms(m, terms, envScale, powers);
             touched[i] = 1;
         } else {

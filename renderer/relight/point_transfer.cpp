@@ -267,11 +267,12 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
 }
 
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                      const std::vector<glm::vec3>& envTexels, PointTerms& out) {
+                      const std::vector<glm::vec3>& envTexels, PointTerms& out,
+                      LobeAverage average) {
     thread_local TexelValues values;
     const ResolvedMaterial& m = materialOf(ctx, p);
     const bool affine = m.colourUse == ColourUse::Affine;
-    visibleTexelValues(ctx, p, s, affine, values);
+    visibleTexelValues(ctx, p, s, affine, values, average);
     glm::dvec3 env(0.0), env0(0.0);
     if (affine && m.oneEval) { // grey values: one channel of each
         for (size_t j = 0; j < values.texel.size(); ++j) {

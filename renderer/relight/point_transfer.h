@@ -143,9 +143,17 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::ve
 // light term as lightTerm computes it (never from T). `envTexels`: L(t) dOmega per texel per unit
 // environmentScale(), the inverse Haar transform of the environment factor (environment_factor.h
 // envTexelValues).
-// Reads s's visibility only, so s may hold T of another material.
+// How a narrow lobe's texels near its mirror direction are averaged: Full, over
+// TexelDirections::kSub^2 sub-directions (what T is built from); Coarse, over kCoarseSub^2 (a
+// quarter of the BRDF evaluations: a material edit's approximate first answer, docs/relighting.md
+// §7.0h).
+enum class LobeAverage { Full, Coarse };
+
+// Reads s's visibility only, so s may hold T of another material. `average`: how a narrow lobe's
+// texels are averaged.
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                      const std::vector<glm::vec3>& envTexels, PointTerms& out);
+                      const std::vector<glm::vec3>& envTexels, PointTerms& out,
+                      LobeAverage average);
 
 // T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
 // values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF

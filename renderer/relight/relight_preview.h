@@ -117,18 +117,24 @@ public:
     // elsewhere from the cached terms with the edited colours and emissions. So it differs from
     // the full answer (applyChanges, then image()) by T's truncation to K coefficients only.
     // The preview is unchanged. nullopt when the change set holds anything else, or some point is
-    // deferred or taken from a shadow field, or — with wideLobesOnly — when a material it would
-    // recompute has a lobe narrower than a texel (ResolvedMaterial::narrow: f averaged over kSub^2
-    // directions in each texel near the mirror direction; measured 2-4x the cost of a wide lobe's
-    // answer and over the frame budget, §7.0g).
+    // deferred or taken from a shadow field. A material it recomputes whose lobe is narrower than
+    // a texel (ResolvedMaterial::narrow) has f averaged over the texels near the mirror direction:
+    // over kSub^2 directions each with LobeAverage::Full, as the full answer (2-4x a wide lobe's
+    // cost, over the frame budget, §7.0g); over kCoarseSub^2 with Coarse, what the editor shows
+    // (a quarter of the BRDF evaluations; within relRMSE 0.05 of the full answer on the bundled
+    // gold, §7.0h), flagged coarseLobes, and only while the edited materials' points times the
+    // grid's texels stay within kCoarseLobeTexelBudget (else nullopt: the walk alone would miss
+    // the frame).
+    static constexpr double kCoarseLobeTexelBudget = 16.0 * 1024 * 1024;
     struct MaterialFirstAnswer {
         util::ImageRGB image; // at preview resolution
         size_t pointsTouched = 0;
         std::vector<std::string> materials; // whose points were recomputed
+        bool coarseLobes = false; // some recomputed lobe was narrow and averaged coarsely
     };
     std::optional<MaterialFirstAnswer> materialFirstAnswer(const scene::Scene& edited,
                                                            const scene::ChangeSet& changes,
-                                                           bool wideLobesOnly = false) const;
+                                                           LobeAverage narrowLobes = LobeAverage::Full) const;
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).
     util::ImageRGB image() const;

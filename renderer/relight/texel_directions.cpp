@@ -9,29 +9,42 @@
 #include <numbers>
 
 namespace wavelit::relight {
+namespace {
+
+// sub x sub stratified directions inside every texel of an n x n map, as components.
+void subDirections(const wavelet::OctahedralMap& map, int n, int sub, std::vector<float>& xs,
+                   std::vector<float>& ys, std::vector<float>& zs) {
+    xs.resize(size_t(n) * size_t(n) * size_t(sub * sub));
+    ys.resize(xs.size());
+    zs.resize(xs.size());
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const size_t first = (size_t(y) * size_t(n) + size_t(x)) * size_t(sub * sub);
+            for (int j = 0; j < sub; ++j)
+                for (int i = 0; i < sub; ++i) {
+                    const glm::vec3 d(map.toDirection(
+                        0, {(x + (i + 0.5) / sub) / n, (y + (j + 0.5) / sub) / n}));
+                    const size_t at = first + size_t(j * sub + i);
+                    xs[at] = d.x;
+                    ys[at] = d.y;
+                    zs[at] = d.z;
+                }
+        }
+}
+
+} // namespace
 
 TexelDirections::TexelDirections(int level) : m_level(level) {
     const wavelet::OctahedralMap map;
     const int n = side();
     m_dirs.resize(size_t(n) * size_t(n));
-    m_subX.resize(m_dirs.size() * kSub * kSub);
-    m_subY.resize(m_subX.size());
-    m_subZ.resize(m_subX.size());
+    subDirections(map, n, kSub, m_subX, m_subY, m_subZ);
+    subDirections(map, n, kCoarseSub, m_coarseX, m_coarseY, m_coarseZ);
     double widest = 0.0;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const glm::dvec3 c = map.toDirection(0, {(x + 0.5) / n, (y + 0.5) / n});
             m_dirs[size_t(y) * size_t(n) + size_t(x)] = glm::vec3(c);
-            const size_t first = (size_t(y) * size_t(n) + size_t(x)) * kSub * kSub;
-            for (int j = 0; j < kSub; ++j)
-                for (int i = 0; i < kSub; ++i) {
-                    const glm::vec3 d(map.toDirection(
-                        0, {(x + (i + 0.5) / kSub) / n, (y + (j + 0.5) / kSub) / n}));
-                    const size_t at = first + size_t(j * kSub + i);
-                    m_subX[at] = d.x;
-                    m_subY[at] = d.y;
-                    m_subZ[at] = d.z;
-                }
             for (int corner = 0; corner < 4; ++corner) {
                 const glm::dvec3 k =
                     map.toDirection(0, {double(x + (corner & 1)) / n, double(y + (corner >> 1)) / n});

@@ -32,15 +32,14 @@ struct DirectionBatch {
     }
 };
 
-constexpr int kSubCount = TexelDirections::kSub * TexelDirections::kSub;
-
-// toLocal of one texel's kSub^2 sub-directions into the batch's arrays: lane by lane the same
+// toLocal of one texel's Count sub-directions into the batch's arrays: lane by lane the same
 // products and sums as toLocal (no FMA without -march), written so the compiler vectorises them
 // (restrict parameters; §7.0f: restrict on local pointers is ignored).
+template <int Count>
 void subDirectionsToLocal(const util::Frame& f, const float* __restrict sx, const float* __restrict sy,
                           const float* __restrict sz, float* __restrict x, float* __restrict y,
                           float* __restrict z) {
-    for (int k = 0; k < kSubCount; ++k) {
+    for (int k = 0; k < Count; ++k) {
         x[k] = f.t.x * sx[k] + f.t.y * sy[k] + f.t.z * sz[k];
         y[k] = f.b.x * sx[k] + f.b.y * sy[k] + f.b.z * sz[k];
         z[k] = f.n.x * sx[k] + f.n.y * sy[k] + f.n.z * sz[k];
@@ -68,10 +67,11 @@ void maskedCosineProducts(size_t n, const float* __restrict f, const float* __re
 // The grey-affine values (ResolvedMaterial::oneEval: f(white) in red, f(black) in green), the
 // same floats as the general loop in visibleTexelValues: a centre's f x cosine, or a narrow
 // texel's sum, in direction order, of f x cosine over its directions above the horizon (+0 for the
-// others, which leaves the non-negative sum as it is) over kSub^2 — one channel of each. The
+// others, which leaves the non-negative sum as it is) over Count — one channel of each. The
 // products first (vectorised), then the narrow texels' sums four texels at a time: each sum is
 // still one chain of additions in order, but four independent chains overlap (one chain alone
 // waited on each addition: a sixth of this function).
+template <int Count>
 void greyValues(const uint32_t* first, size_t texels, const float* z, const Channels& f, TexelValues& out) {
     thread_local std::vector<float> white, black;
     thread_local std::vector<uint32_t> narrow;
@@ -90,7 +90,7 @@ void greyValues(const uint32_t* first, size_t texels, const float* z, const Chan
         out.white[j] = glm::vec3(f.r[begin] * z[begin]);
         out.black[j] = glm::vec3(f.g[begin] * z[begin]);
     }
-    constexpr float kInv = 1.0f / float(kSubCount); // a power of two: the same as dividing
+    constexpr float kInv = 1.0f / float(Count); // a power of two: the same as dividing
     size_t g = 0;
     for (; g + 4 <= narrow.size(); g += 4) {
         const float* w[4];
@@ -100,7 +100,7 @@ void greyValues(const uint32_t* first, size_t texels, const float* z, const Chan
             b[l] = &black[first[narrow[g + size_t(l)]]];
         }
         float sw[4] = {0.0f, 0.0f, 0.0f, 0.0f}, sb[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        for (int k = 0; k < kSubCount; ++k)
+        for (int k = 0; k < Count; ++k)
             for (int l = 0; l < 4; ++l) {
                 sw[l] += w[l][k];
                 sb[l] += b[l][k];
@@ -113,7 +113,7 @@ void greyValues(const uint32_t* first, size_t texels, const float* z, const Chan
     for (; g < narrow.size(); ++g) {
         const size_t begin = first[narrow[g]];
         float sw = 0.0f, sb = 0.0f;
-        for (int k = 0; k < kSubCount; ++k) {
+        for (int k = 0; k < Count; ++k) {
             sw += white[begin + size_t(k)];
             sb += black[begin + size_t(k)];
         }
@@ -122,17 +122,20 @@ void greyValues(const uint32_t* first, size_t texels, const float* z, const Chan
     }
 }
 
-} // namespace
-
-void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
-                        TexelValues& out) {
+// visibleTexelValues with a narrow lobe's texels averaged over Sub x Sub sub-directions.
+template <int Sub>
+void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
+                        bool withBlack, TexelValues& out) {
+    constexpr bool kFull = Sub == TexelDirections::kSub;
+    static_assert(kFull || Sub == TexelDirections::kCoarseSub);
+    const TexelDirections& grid = *ctx.dirs;
     thread_local DirectionBatch dirs;
     thread_local Channels f, f0;
     const ResolvedMaterial& m = materialOf(ctx, p);
     const util::Frame frame = util::Frame::fromNormal(p.shading);
     const glm::vec3 wo = frame.toLocal(p.wo);
     const glm::vec3 mirror(-wo.x, -wo.y, wo.z);
-    constexpr int kCount = TexelDirections::kSub * TexelDirections::kSub;
+    constexpr int kCount = Sub * Sub;
     const size_t gridTexels = ctx.dirs->count();
     dirs.reserve(gridTexels, gridTexels * (m.narrow ? kCount : 1));
     out.texel.resize(gridTexels);
@@ -143,8 +146,12 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
         const glm::vec3 local = frame.toLocal(ctx.dirs->direction(t));
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
             const size_t at = dirs.size;
-            subDirectionsToLocal(frame, ctx.dirs->subX(t), ctx.dirs->subY(t), ctx.dirs->subZ(t), &dirs.x[at],
-                                 &dirs.y[at], &dirs.z[at]);
+            if constexpr (kFull)
+                subDirectionsToLocal<kCount>(frame, grid.subX(t), grid.subY(t), grid.subZ(t),
+                                             &dirs.x[at], &dirs.y[at], &dirs.z[at]);
+            else
+                subDirectionsToLocal<kCount>(frame, grid.coarseSubX(t), grid.coarseSubY(t),
+                                             grid.coarseSubZ(t), &dirs.x[at], &dirs.y[at], &dirs.z[at]);
             dirs.size += kCount;
         } else {
             dirs.push(local);
@@ -164,7 +171,7 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
     out.white.resize(texels);
     out.black.resize(withBlack ? texels : 0);
     if (one) {
-        greyValues(dirs.first.data(), texels, dirs.z.data(), f, out);
+        greyValues<kCount>(dirs.first.data(), texels, dirs.z.data(), f, out);
         return;
     }
     for (size_t j = 0; j < texels; ++j) {
@@ -187,6 +194,16 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
         out.white[j] = sum / float(kCount);
         if (withBlack) out.black[j] = sum0 / float(kCount);
     }
+}
+
+} // namespace
+
+void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
+                        TexelValues& out, LobeAverage average) {
+    if (average == LobeAverage::Coarse)
+        valuesAveragedOver<TexelDirections::kCoarseSub>(ctx, p, s, withBlack, out);
+    else
+        valuesAveragedOver<TexelDirections::kSub>(ctx, p, s, withBlack, out);
 }
 
 } // namespace wavelit::relight

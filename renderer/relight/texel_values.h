@@ -42,7 +42,8 @@ struct TexelValues {
     std::vector<uint32_t> texel;
     std::vector<glm::vec3> white, black;
 };
+// LobeAverage (point_transfer.h): how the narrow lobe's texels are averaged.
 void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
-                        TexelValues& out);
+                        TexelValues& out, LobeAverage average = LobeAverage::Full);
 
 } // namespace wavelit::relight
