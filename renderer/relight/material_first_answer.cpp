@@ -52,7 +52,8 @@ std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirst
     for (const scene::Material& m : edited.materials) materials.push_back(resolveMaterial(m, m_dirs.texelRadius()));
     materials.push_back(m_materials.back()); // the default material
     for (size_t m = 0; m < edited.materials.size(); ++m)
-        answer.coarseLobes |= narrowLobes == LobeAverage::Coarse && recompute[m] && materials[m].narrow;
+        answer.coarseLobes |=
+            narrowLobes == LobeAverage::Coarse && recompute[m] && materials[m].narrow;
     if (answer.coarseLobes) {
         // The walk is ~points x grid texels: past the budget (a 64^2 grid's chrome, ~8x the
         // bundled gold's 32^2) even the coarse average misses the frame, and the corrected

@@ -166,7 +166,8 @@ TEST(RelightMaterialFirstAnswer, CoarseLobeAverageIsCloseToTheFullOneAndOnlyForN
         scene::Scene scene = testing::makeRelightScene();
         auto preview = RelightPreview::create(scene, testing::smallSettings());
         ASSERT_TRUE(preview);
-        const scene::ChangeSet changes = editScene(scene, {{{K::Material, 2}, "roughness", roughness}});
+        const scene::ChangeSet changes =
+            editScene(scene, {{{K::Material, 2}, "roughness", roughness}});
         const auto full = (*preview)->materialFirstAnswer(scene, changes, LobeAverage::Full);
         const auto coarse = (*preview)->materialFirstAnswer(scene, changes, LobeAverage::Coarse);
         ASSERT_TRUE(full && coarse);

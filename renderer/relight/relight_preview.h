@@ -132,9 +132,9 @@ public:
         std::vector<std::string> materials; // whose points were recomputed
         bool coarseLobes = false; // some recomputed lobe was narrow and averaged coarsely
     };
-    std::optional<MaterialFirstAnswer> materialFirstAnswer(const scene::Scene& edited,
-                                                           const scene::ChangeSet& changes,
-                                                           LobeAverage narrowLobes = LobeAverage::Full) const;
+    std::optional<MaterialFirstAnswer>
+    materialFirstAnswer(const scene::Scene& edited, const scene::ChangeSet& changes,
+                        LobeAverage narrowLobes = LobeAverage::Full) const;
 
     // Linear radiance at preview resolution, and scaled to width x height (nearest point).
     util::ImageRGB image() const;

@@ -37,9 +37,15 @@ public:
     // The same at kCoarseSub x kCoarseSub: a material edit's approximate first answer for a
     // narrow lobe (a quarter of the BRDF evaluations; docs/relighting.md §7.0h).
     static constexpr int kCoarseSub = 2;
-    const float* coarseSubX(size_t texel) const { return &m_coarseX[texel * kCoarseSub * kCoarseSub]; }
-    const float* coarseSubY(size_t texel) const { return &m_coarseY[texel * kCoarseSub * kCoarseSub]; }
-    const float* coarseSubZ(size_t texel) const { return &m_coarseZ[texel * kCoarseSub * kCoarseSub]; }
+    const float* coarseSubX(size_t texel) const {
+        return &m_coarseX[texel * kCoarseSub * kCoarseSub];
+    }
+    const float* coarseSubY(size_t texel) const {
+        return &m_coarseY[texel * kCoarseSub * kCoarseSub];
+    }
+    const float* coarseSubZ(size_t texel) const {
+        return &m_coarseZ[texel * kCoarseSub * kCoarseSub];
+    }
     // The texel holding direction d (any non-zero vector).
     uint32_t texelOf(const glm::vec3& d) const;
     // The same for a unit vector, inline: a rect light's drag maps ~30 samples per point through

@@ -151,7 +151,8 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
                                              &dirs.x[at], &dirs.y[at], &dirs.z[at]);
             else
                 subDirectionsToLocal<kCount>(frame, grid.coarseSubX(t), grid.coarseSubY(t),
-                                             grid.coarseSubZ(t), &dirs.x[at], &dirs.y[at], &dirs.z[at]);
+                                             grid.coarseSubZ(t), &dirs.x[at], &dirs.y[at],
+                                             &dirs.z[at]);
             dirs.size += kCount;
         } else {
             dirs.push(local);
