@@ -4,6 +4,7 @@
 
 #include "render/testing/cpu_analytic_scenes.h"
 #include "render/gpu/gpu_path_tracer.h"
+#include "render/gpu/gpu_path_tracer_test_support.h"
 #include "render/session/integrator_factory.h"
 #include "scene/bvh.h"
 
@@ -18,13 +19,8 @@
 namespace wavelit::render::gpu_lights_test {
 
 RenderOptions gpuOptions(int bounces, int size) {
-    RenderOptions o;
-    o.width = size;
-    o.height = size;
-    o.bounces = bounces;
-    o.seed = 11;
-    o.device = DeviceChoice::Vulkan;
-    o.validation = true;
+    RenderOptions o = gpu_tracer_test::testOptions(bounces, size, size);
+    o.seed = 11; // the light tests' images were measured with this seed
     return o;
 }
 

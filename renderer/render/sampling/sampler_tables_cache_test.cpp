@@ -1,107 +1,24 @@
 // SamplerTablesCache (issue 6; architecture.md §5 change sets, §7): each edit rebuilds exactly the
 // tables it invalidates, judged twice — by the cache's counters and by pointer identity of the
 // shared SamplerEnvironment / MaterialProductTables — and whatever is rebuilt or reused is the
-// same in content as a fresh build. Then the CPU tracer through RenderSession: an object move swaps
-// the scene without touching the tables, and the image follows the move.
+// same in content as a fresh build (environment edits: sampler_tables_cache_environment_test.cpp).
+// Then the CPU tracer through RenderSession: an object move swaps the scene without touching the
+// tables, and the image follows the move.
 #include "render/sampling/sampler_tables_cache.h"
 
-#include "render/testing/cpu_analytic_scenes.h"
+#include "render/sampling/sampler_tables_cache_test_support.h"
 #include "render/session/render_session.h"
-#include "render/testing/sampler_test_envs.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <memory>
-#include <regex>
 #include <string>
 
 namespace wavelit::render {
 namespace {
 
-// Indices of the test scene's materials (and the default one, unused) in Scene::materials order.
-constexpr size_t kGgx = 0, kLambert = 1, kDefault = 2;
-
-// Two spheres: a GGX one (roughness 0.35, where the product policy builds windowed bins: its lobe
-// is 4.4 env texels wide, over the 4 below which the policy takes mis's technique) and a
-// Lambert one, under a 64 x 32 sky with a sun (env level 6: a small but lit map).
-scene::Scene testScene() {
-    scene::Material ggx;
-    ggx.name = "glossy";
-    ggx.brdf = "ggx";
-    ggx.roughness = 0.35f;
-    ggx.baseColor = glm::vec3(0.9f, 0.7f, 0.5f);
-    scene::Scene s = *makeFurnaceScene(ggx, glm::vec3(1.0f), 32, 16);
-    scene::Material lambert;
-    lambert.id = 3;
-    lambert.name = "matte";
-    lambert.brdf = "lambert";
-    s.materials.push_back(lambert);
-    scene::Object second = s.objects[0];
-    second.id = 4;
-    second.name = "matte sphere";
-    second.materialId = lambert.id;
-    second.transform.translation = glm::vec3(1.2f, 0.0f, -1.0f);
-    second.transform.scale = glm::vec3(0.5f);
-    s.objects[0].transform.scale = glm::vec3(0.6f);
-    s.objects.push_back(second);
-    s.lighting.environment = makeSunSkyEnvironment(64, glm::vec3(0.3f, 0.8f, 0.5f), 200.0);
-    return s;
-}
-
-struct Counts {
-    int envBuilds, materialBuilds, envReuses, materialReuses;
-};
-
-void expectCounts(const SamplerTablesRebuilds& r, Counts c) {
-    EXPECT_EQ(r.environmentBuilds, c.envBuilds);
-    EXPECT_EQ(r.materialBuilds, c.materialBuilds);
-    EXPECT_EQ(r.environmentReuses, c.envReuses);
-    EXPECT_EQ(r.materialReuses, c.materialReuses);
-}
-
-// Product tables of scene material `m`: nullptr when it has none.
-const MaterialProductTables* product(const SceneSamplerTables& t, size_t m) {
-    const int i = t.samplerIndexOfMaterial.at(m);
-    return i < 0 ? nullptr : t.tables->productTables(size_t(i));
-}
-
-// The report with build times and reuse marks removed: what a fresh build must reproduce.
-std::string reportWithoutTimings(const DirectionSamplerTables& t) {
-    static const std::regex timing(R"(built in [0-9.]+ ms| \(reused\)| \(the previous, turned\))");
-    return std::regex_replace(t.report(), timing, "");
-}
-
-// Same content as a fresh build of the same scene: report text, env tables, and every product
-// table's flat export (the arrays the GPU reads) word for word.
-void expectSameAsFreshBuild(const scene::Scene& scene, const SceneSamplerTables& got) {
-    SamplerTablesCache fresh;
-    auto want = fresh.update(scene, SamplerKind::Wavelet);
-    ASSERT_TRUE(want.ok());
-    EXPECT_EQ(got.samplerIndexOfMaterial, want->samplerIndexOfMaterial);
-    const DirectionSamplerTables &a = *got.tables, &b = *want->tables;
-    EXPECT_EQ(reportWithoutTimings(a), reportWithoutTimings(b));
-    EXPECT_EQ(a.environment().level(), b.environment().level());
-    EXPECT_EQ(a.environment().bytes(), b.environment().bytes());
-    const int side = 1 << a.environment().level();
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x)
-            ASSERT_EQ(a.environment().cellAverage(a.environment().level(), x, y),
-                      b.environment().cellAverage(b.environment().level(), x, y));
-    EXPECT_EQ(a.environment().effectiveSolidAngle(), b.environment().effectiveSolidAngle());
-    EXPECT_TRUE(a.environment().exact().pdfTable() == b.environment().exact().pdfTable());
-    EXPECT_TRUE(a.environment().exact().columnCdf() == b.environment().exact().columnCdf());
-    EXPECT_TRUE(a.environment().exact().rowCdf() == b.environment().exact().rowCdf());
-    ASSERT_EQ(a.materialCount(), b.materialCount());
-    for (size_t i = 0; i < a.materialCount(); ++i) {
-        ASSERT_TRUE(a.productTables(i) && b.productTables(i));
-        const FlatProductTables fa = a.productTables(i)->flatten(),
-                                fb = b.productTables(i)->flatten();
-        EXPECT_EQ(fa.header, fb.header) << a.material(i).name;
-        EXPECT_EQ(fa.nodeWords, fb.nodeWords) << a.material(i).name;
-        EXPECT_EQ(fa.scaling, fb.scaling) << a.material(i).name;
-    }
-}
+using namespace sampler_tables_test;
 
 TEST(SamplerTablesCache, FirstUpdateBuildsTheEnvAndOneProductTablePerUsedMaterial) {
     const scene::Scene scene = testScene();
@@ -131,109 +48,6 @@ TEST(SamplerTablesCache, ObjectMoveRebuildsNothingAndKeepsTheSameTables) {
     EXPECT_EQ(&after->tables->environment(), &before->tables->environment());
     EXPECT_EQ(product(*after, kGgx), product(*before, kGgx));
     EXPECT_EQ(product(*after, kLambert), product(*before, kLambert));
-}
-
-// Every table is env-local (the unrotated map's), so a rotation turns the env tables — a copy
-// with the new yaw and radiance lookup — and keeps every product table; the result is a fresh
-// build's in content and in the world-frame answers (frames, env pdf, env draws).
-TEST(SamplerTablesCache, EnvRotationTurnsTheEnvTablesAndKeepsEveryProductTable) {
-    scene::Scene scene = testScene();
-    SamplerTablesCache cache;
-    auto before = cache.update(scene, SamplerKind::Wavelet);
-    ASSERT_TRUE(before.ok());
-    scene.lighting.environment.rotationDeg = 45.0f;
-    auto after = cache.update(scene, SamplerKind::Wavelet);
-    ASSERT_TRUE(after.ok());
-    expectCounts(cache.rebuilds(), {1, 2, 0, 2});
-    EXPECT_EQ(cache.rebuilds().environmentRotations, 1);
-    EXPECT_NE(&after->tables->environment(), &before->tables->environment());
-    EXPECT_EQ(product(*after, kGgx), product(*before, kGgx));
-    EXPECT_EQ(product(*after, kLambert), product(*before, kLambert));
-    EXPECT_FALSE(after->tables->environmentReused());
-    EXPECT_TRUE(after->tables->environmentRotated());
-    expectSameAsFreshBuild(scene, *after);
-
-    SamplerTablesCache freshCache;
-    auto fresh = freshCache.update(scene, SamplerKind::Wavelet);
-    ASSERT_TRUE(fresh.ok());
-    const SamplerEnvironment& turned = after->tables->environment();
-    const SamplerEnvironment& built = fresh->tables->environment();
-    int compared = 0;
-    for (int i = 0; i < 64; ++i)
-        for (int j = 0; j < 64; ++j) {
-            const glm::dvec2 u((i + 0.5) / 64.0, (j + 0.5) / 64.0);
-            const wavelet::DirectionSample a = turned.sampleLocal(u), b = built.sampleLocal(u);
-            ASSERT_EQ(a.direction, b.direction);
-            ASSERT_EQ(a.pdf, b.pdf);
-            const glm::vec3 world(turned.toWorld(a.direction));
-            ASSERT_EQ(world, glm::vec3(built.toWorld(b.direction)));
-            ASSERT_EQ(turned.pdfWorld(world), built.pdfWorld(world));
-            ASSERT_EQ(turned.toLocal(glm::dvec3(world)), built.toLocal(glm::dvec3(world)));
-            ++compared;
-        }
-    EXPECT_EQ(compared, 64 * 64);
-    // And it is not the unturned tables' answer (the yaw took effect).
-    const glm::dvec3 local = turned.sampleLocal({0.3, 0.6}).direction;
-    EXPECT_NE(glm::vec3(before->tables->environment().toWorld(local)),
-              glm::vec3(turned.toWorld(local)));
-}
-
-// An intensity edit keeps every table (they are built at intensity 1: tablesEnvironment), and the
-// kept tables are a fresh build's at the new intensity, bit for bit.
-TEST(SamplerTablesCache, EnvIntensityKeepsEveryTableAndTheyAreAFreshBuilds) {
-    scene::Scene scene = testScene();
-    SamplerTablesCache cache;
-    auto before = cache.update(scene, SamplerKind::Wavelet);
-    ASSERT_TRUE(before.ok());
-    for (const float intensity : {3.7f, 1e-3f, 5e4f}) {
-        scene.lighting.environment.intensity = intensity;
-        auto after = cache.update(scene, SamplerKind::Wavelet);
-        ASSERT_TRUE(after.ok());
-        EXPECT_EQ(after->tables, before->tables) << intensity;
-        EXPECT_EQ(cache.rebuilds().environmentBuilds, 1);
-        EXPECT_EQ(cache.rebuilds().materialBuilds, 2);
-        expectSameAsFreshBuild(scene, *after);
-    }
-}
-
-// Every field of scene::Environment is an input: each edit rebuilds the env; an equal copy of the
-// image (another pointer, same texels) does not, and neither does a positive intensity (the
-// tables are built at intensity 1: tablesEnvironment); intensity 0 turns the env black.
-TEST(SamplerTablesCache, EveryEnvironmentFieldInvalidatesAndAnEqualImageCopyDoesNot) {
-    struct Edit {
-        const char* what;
-        void (*apply)(scene::Environment&);
-        bool rebuilds;
-    };
-    const Edit edits[] = {
-        {"intensity", [](scene::Environment& e) { e.intensity = 2.0f; }, false},
-        {"intensity 0", [](scene::Environment& e) { e.intensity = 0.0f; }, true},
-        {"tint", [](scene::Environment& e) { e.tint = glm::vec3(1.0f, 0.5f, 0.25f); }, true},
-        {"path", [](scene::Environment& e) { e.path = "other.exr"; }, true},
-        {"one texel",
-         [](scene::Environment& e) {
-             auto copy = std::make_shared<util::ImageRGB>(*e.image);
-             copy->at(3, 5) *= 2.0f;
-             e.image = copy;
-         },
-         true},
-        {"equal copy",
-         [](scene::Environment& e) { e.image = std::make_shared<util::ImageRGB>(*e.image); },
-         false},
-    };
-    for (const Edit& edit : edits) {
-        scene::Scene scene = testScene();
-        SamplerTablesCache cache;
-        auto before = cache.update(scene, SamplerKind::Wavelet);
-        ASSERT_TRUE(before.ok());
-        edit.apply(scene.lighting.environment);
-        auto after = cache.update(scene, SamplerKind::Wavelet);
-        ASSERT_TRUE(after.ok());
-        EXPECT_EQ(cache.rebuilds().environmentBuilds, edit.rebuilds ? 2 : 1) << edit.what;
-        EXPECT_EQ(cache.rebuilds().materialBuilds, edit.rebuilds ? 4 : 2) << edit.what;
-        EXPECT_EQ(&after->tables->environment() == &before->tables->environment(), !edit.rebuilds)
-            << edit.what;
-    }
 }
 
 TEST(SamplerTablesCache, RoughnessEditRebuildsExactlyThatMaterial) {
