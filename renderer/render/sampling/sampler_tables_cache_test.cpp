@@ -8,6 +8,8 @@
 
 #include "render/sampling/sampler_tables_cache_test_support.h"
 #include "render/session/render_session.h"
+#include "render/testing/cpu_analytic_scenes.h"
+#include "render/testing/sampler_test_envs.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +18,37 @@
 #include <string>
 
 namespace wavelit::render {
+
+// The support header's test scene (here: the render test executable's *_test.cpp files may use
+// render/testing/).
+namespace sampler_tables_test {
+
+scene::Scene testScene() {
+    scene::Material ggx;
+    ggx.name = "glossy";
+    ggx.brdf = "ggx";
+    ggx.roughness = 0.35f;
+    ggx.baseColor = glm::vec3(0.9f, 0.7f, 0.5f);
+    scene::Scene s = *makeFurnaceScene(ggx, glm::vec3(1.0f), 32, 16);
+    scene::Material lambert;
+    lambert.id = 3;
+    lambert.name = "matte";
+    lambert.brdf = "lambert";
+    s.materials.push_back(lambert);
+    scene::Object second = s.objects[0];
+    second.id = 4;
+    second.name = "matte sphere";
+    second.materialId = lambert.id;
+    second.transform.translation = glm::vec3(1.2f, 0.0f, -1.0f);
+    second.transform.scale = glm::vec3(0.5f);
+    s.objects[0].transform.scale = glm::vec3(0.6f);
+    s.objects.push_back(second);
+    s.lighting.environment = makeSunSkyEnvironment(64, glm::vec3(0.3f, 0.8f, 0.5f), 200.0);
+    return s;
+}
+
+} // namespace sampler_tables_test
+
 namespace {
 
 using namespace sampler_tables_test;

@@ -4,8 +4,6 @@
 #pragma once
 
 #include "render/sampling/sampler_tables_cache.h"
-#include "render/testing/cpu_analytic_scenes.h"
-#include "render/testing/sampler_test_envs.h"
 
 #include <gtest/gtest.h>
 
@@ -20,29 +18,7 @@ inline constexpr size_t kGgx = 0, kLambert = 1, kDefault = 2;
 // Two spheres: a GGX one (roughness 0.35, where the product policy builds windowed bins: its lobe
 // is 4.4 env texels wide, over the 4 below which the policy takes mis's technique) and a
 // Lambert one, under a 64 x 32 sky with a sun (env level 6: a small but lit map).
-inline scene::Scene testScene() {
-    scene::Material ggx;
-    ggx.name = "glossy";
-    ggx.brdf = "ggx";
-    ggx.roughness = 0.35f;
-    ggx.baseColor = glm::vec3(0.9f, 0.7f, 0.5f);
-    scene::Scene s = *makeFurnaceScene(ggx, glm::vec3(1.0f), 32, 16);
-    scene::Material lambert;
-    lambert.id = 3;
-    lambert.name = "matte";
-    lambert.brdf = "lambert";
-    s.materials.push_back(lambert);
-    scene::Object second = s.objects[0];
-    second.id = 4;
-    second.name = "matte sphere";
-    second.materialId = lambert.id;
-    second.transform.translation = glm::vec3(1.2f, 0.0f, -1.0f);
-    second.transform.scale = glm::vec3(0.5f);
-    s.objects[0].transform.scale = glm::vec3(0.6f);
-    s.objects.push_back(second);
-    s.lighting.environment = makeSunSkyEnvironment(64, glm::vec3(0.3f, 0.8f, 0.5f), 200.0);
-    return s;
-}
+scene::Scene testScene(); // defined in sampler_tables_cache_test.cpp (it uses render/testing/)
 
 struct Counts {
     int envBuilds, materialBuilds, envReuses, materialReuses;
