@@ -1,6 +1,8 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/reference/cpu_path_tracer.cpp within noise.
+// A scattering vertex and its continuation ray are path_vertex.glsl's scatterVertex; main() traces
+// the camera ray and calls it per vertex.
 // Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
 // defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
 // sampling/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
@@ -99,10 +101,6 @@ layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache64 { 
 #include "common/bvh.glsl"
 #include "common/brdf.glsl"
 
-const float kRayOffset = 1e-4;             // x max(1, |hit|): scale-aware self-intersection epsilon
-const float kMinContinueProbability = 0.05; // Russian roulette floor
-const int kRussianRouletteDepth = 2;
-
 vec3 envRadiance(vec3 dir) {
     return environmentRadiance(dir, params.envScale.rgb, params.envRotation.xy, params.envSize.xy);
 }
@@ -164,232 +162,57 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
 #include "sampling/product_cache.glsl"
 #endif
 
+#include "path_vertex.glsl"
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     uvec2 size = params.size.xy;
     if (pixel.x >= size.x || pixel.y >= size.y) return;
-    uint pixelIndex = pixel.y * size.x + pixel.x;
-    PathSampler rng = psStart(pass.seedKey, pixelIndex, pass.index);
-    vec2 jitter = psNext2D(rng);
-    float jx = jitter.x, jy = jitter.y;
-
-    vec3 origin = params.camPosition.xyz;
-    vec3 dir = cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
-                               params.camForward.w, params.camRight.w, size, pixel, jx, jy);
-    uint bounces = params.size.z;
-    uint triangleCount = params.size.w;
-    uint materialCount = params.envSize.z;
-    uint lightCount = params.envSize.w;
-    float selection = params.lightInfo.x;
-    vec3 L = vec3(0.0), beta = vec3(1.0);
-    float scatterPdfOfDir = 0.0; // solid-angle pdf with which the last vertex drew `dir`
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-    // The tracer's sampler is fixed when its pipeline is made (gpu_path_tracer.cpp defines it):
-    // a constant lets the compiler drop the other kinds' code (uniform/cosine continuations, the
-    // general mixture set-up and pdfs); params.samplerInfo.x carries the same code.
-    // docs/performance.md "`mis` pass cost, round 3": -0.65 of a 10.6 CPU-s `mis` pass.
-    const uint kind = WAVELIT_SAMPLER_KIND;
-    bool lit = params.samplerInfo.y != 0u;
-    // The kinds whose vertex sampler draws the continuation (else it is the env NEE technique).
-    bool continuationFromSampler = kind == kSamplerUniform || kind == kSamplerCosine;
-    bool envNee = kind == kSamplerEnv || kind == kSamplerMis || kind == kSamplerWavelet ||
-                  kind == kSamplerOracle;
-    // The vertex that drew `dir` estimated direct env light by NEE with `ds` (still its sampler:
-    // set up per vertex, and an escaping ray sets up none).
+    PathState st;
+    st.pixelIndex = pixel.y * size.x + pixel.x;
+    st.rng = psStart(pass.seedKey, st.pixelIndex, pass.index);
+    vec2 jitter = psNext2D(st.rng);
+    st.origin = params.camPosition.xyz;
+    st.dir = cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
+                             params.camForward.w, params.camRight.w, size, pixel, jitter.x,
+                             jitter.y);
+    st.depth = 0u;
+    st.L = vec3(0.0);
+    st.beta = vec3(1.0);
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
     // The pixel's cached camera-vertex mixture, built in the first pass after a reset.
-    uint cacheAt = productCache[pixelIndex];
-    if (pass.buildCache != 0u && cacheAt != kNoCacheEntry && lit) {
+    st.cacheAt = productCache[st.pixelIndex];
+    if (pass.buildCache != 0u && st.cacheAt != kNoCacheEntry && params.samplerInfo.y != 0u) {
         SamplerGlobals cg;
-        cg.kind = kind;
+        cg.kind = WAVELIT_SAMPLER_KIND;
         cg.lit = true;
         cg.tailOffset = params.samplerInfo.z;
         cg.envLevel = int(params.samplerInfo.w);
         cg.envMean = params.samplerEnv.x;
         cg.cosSinYaw = params.envRotation.xy;
-        pcBuild(cacheAt, origin,
+        pcBuild(st.cacheAt, st.origin,
                 cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
                                 params.camForward.w, params.camRight.w, size, pixel, 0.5, 0.5),
-                cg, triangleCount, materialCount);
+                cg, params.size.w, params.envSize.z);
     }
 #endif
-    bool neeOfDir = false;
-    // ...and that technique was the env alone with `mis`'s weights (mis; wavelet past its product
-    // vertices or under the EnvMis policy): its pdf and radiance come from one texel lookup.
-    bool misNeeOfDir = false;
-    DirSampler ds;
-#endif
-    for (uint depth = 0u;; ++depth) {
-        uint tri;
-        float t, b1, b2;
-        bool found = bvhTrace(origin, dir, 0.0, kFloatMax, false, triangleCount, tri, t, b1, b2);
-        // Analytic lights crossed before the surface (or the sun, when the ray escapes).
-        if (lightCount > 0u)
-            L += beta * emissionAlongRay(origin, dir, t, !found, scatterPdfOfDir, depth == 0u,
-                                         lightCount, selection, beta, pixelIndex);
-        if (!found) {
-            float w = 1.0;
+    // The camera ray: lights and the environment it sees unweighted.
+    if (!traceSegment(st, 0.0, true)) {
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-            // mis: one texel lookup gives both the radiance and the env technique's pdf.
-            if (neeOfDir && misNeeOfDir) {
-                uvec2 exactSize = envExactSize(ds.exactOffset);
-                uvec2 t = equirectTexelOf(dir, ds.cosSinYaw, exactSize);
-                w = powerHeuristic(scatterPdfOfDir,
-                                   float(envExactTexelPdfSized(ds.exactOffset, exactSize, t)));
-                vec3 escaped = beta * (w * envTexelRadiance(t));
-                L += escaped;
-#ifdef WAVELIT_LIGHT_GROUPS
-                splatGroup(environmentGroup, pixelIndex, escaped);
-#endif
-                break;
-            }
-            if (neeOfDir)
-                w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdfOfDir, dsPdf(ds, dir));
-#endif
-            vec3 escaped = beta * (w * envRadiance(dir));
-            L += escaped;
-#ifdef WAVELIT_LIGHT_GROUPS
-            splatGroup(environmentGroup, pixelIndex, escaped);
-#endif
-            break;
-        }
-        BvhTriangle T = loadTriangle(tri);
-        vec3 position = origin + t * dir;
-        vec3 ng = normalize(cross(T.v1.xyz - T.v0.xyz, T.v2.xyz - T.v0.xyz));
-        if (dot(ng, dir) > 0.0) ng = -ng;
-        float b0 = 1.0 - b1 - b2;
-        vec3 ns = b0 * T.n0.xyz + b1 * T.n1.xyz + b2 * T.n2.xyz;
-        float len = length(ns);
-        ns = len > 0.0 ? ns / len : ng;
-        if (dot(ns, ng) < 0.0) ns = -ns;
-        if (dot(-dir, ns) <= 0.0) ns = ng;
-
-        uint m = min(uint(max(T.v0.w, 0.0)), materialCount - 1u);
-        Material mat = loadMaterial(m);
-        L += beta * mat.emissionType.rgb;
-#ifdef WAVELIT_LIGHT_GROUPS
-        if (any(notEqual(mat.emissionType.rgb, vec3(0.0))))
-            splatGroup(emissionGroup, pixelIndex, beta * mat.emissionType.rgb);
-#endif
-        if (depth == bounces) break;
-
-        Frame frame = frameFromNormal(ns);
-        uint brdfType = uint(mat.emissionType.a);
-        vec3 wo = frameToLocal(frame, -dir);
-        // Lights are sampled from the continuation-ray origin, as the CPU tracer does.
-        vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        SamplerGlobals globals;
-        // mis's NEE: the env alone; wavelet's too past its product vertices (vertexSamplerKind).
-        bool envTechniqueHere =
-            kind == kSamplerMis ||
-            (kind == kSamplerWavelet && depth >= uint(WAVELIT_WAVELET_PRODUCT_VERTICES));
-        globals.kind = envTechniqueHere ? kSamplerEnv : kind;
-        globals.lit = params.samplerInfo.y != 0u;
-        globals.tailOffset = params.samplerInfo.z;
-        globals.envLevel = int(params.samplerInfo.w);
-        globals.envMean = params.samplerEnv.x;
-        globals.cosSinYaw = params.envRotation.xy;
-        bool vertexNee = envNee && lit;
-#ifdef WAVELIT_PRODUCT_CACHE_BINDING
-        // wavelet: the camera vertex of a product material draws from the pixel's cached
-        // mixture (its centre hit the same material), every other vertex (and a camera vertex
-        // the cache does not hold) uses `mis`'s technique — bsdf alone for a material without
-        // tables, as dsSetup would; the product code lives in pcBuild alone.
-        if (vertexNee) {
-            SamplerMaterial sm = samplerMaterials[m];
-            if (!(depth == 0u && pcCacheableMode(sm.mode) &&
-                  pcLoad(cacheAt, m, globals, brdfType, mat.baseColorRoughness.rgb,
-                         mat.baseColorRoughness.a, ds))) {
-                globals.kind = depth == 0u && sm.mode == kModeBsdfOnly ? kSamplerBsdf : kSamplerEnv;
-                ds = dsSetupWith(false, globals, sm, frame, wo, brdfType,
-                                 mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
-            }
-        }
+        DirSampler none;
+        addEscapedEnvironment(st, 0.0, false, false, none);
 #else
-        if (continuationFromSampler || vertexNee)
-            ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType,
-                         mat.baseColorRoughness.rgb, mat.baseColorRoughness.a);
+        addEscapedEnvironment(st, 0.0, false, false);
 #endif
-#endif
-        if (lightCount > 0u) {
-            float uSelect = psNext1D(rng);
-            vec2 ul = psNext2D(rng);
-            vec3 direct = beta * nextEvent(brdfType, mat.baseColorRoughness.rgb,
-                                           mat.baseColorRoughness.a, frame, wo, ng, next, uSelect,
-                                           ul.x, ul.y, lightCount, selection, triangleCount
+    } else {
+        bool more = true;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-                                           , ds, continuationFromSampler
+        // `wavelet`'s camera vertex in its own copy, the only one with the product code
+        // (path_vertex.glsl).
+        if (WAVELIT_SAMPLER_KIND == kSamplerWavelet) more = scatterVertex(true, st);
 #endif
-            );
-            L += direct;
-#ifdef WAVELIT_LIGHT_GROUPS
-            splatGroup(groupOfLight[min(uint(uSelect * float(lightCount)), lightCount - 1u)],
-                       pixelIndex, direct);
-#endif
-        }
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        if (envNee) {
-            vec2 ue = psNext2D(rng);
-            float ue3 = psNext1D(rng);
-            if (vertexNee) {
-                // The env technique alone (mis, wavelet's env-only vertices, env): one texel
-                // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
-                bool techniqueOnly = ds.cEnv == 1.0;
-                bool roulette = techniqueOnly && kind != kSamplerEnv;
-                vec3 envDirect = beta * envNextEvent(ds, techniqueOnly, roulette, beta, brdfType,
-                                                     mat.baseColorRoughness.rgb,
-                                                     mat.baseColorRoughness.a, frame, wo, ng, next,
-                                                     ue.x, ue.y, ue3, kind == kSamplerEnv,
-                                                     triangleCount);
-                L += envDirect;
-#ifdef WAVELIT_LIGHT_GROUPS
-                splatGroup(environmentGroup, pixelIndex, envDirect);
-#endif
-            }
-        }
-#endif
-
-        vec2 u12 = psNext2D(rng);
-        float u1 = u12.x, u2 = u12.y;
-        vec3 wiLocal, f;
-        float pdf;
-        vec3 wi;
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        if (continuationFromSampler) {
-            // The mixture's draw; the estimator divides by its pdf (architecture.md §4).
-            float u3 = psNext1D(rng);
-            vec3 wiWorld;
-            if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) break;
-            wiLocal = frameToLocal(frame, wiWorld);
-            if (wiLocal.z <= 0.0) break;
-            f = brdfEval(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo,
-                         wiLocal);
-            wi = wiWorld;
-        } else
-#endif
-        {
-            if (!brdfSample(brdfType, mat.baseColorRoughness.rgb, mat.baseColorRoughness.a, wo,
-                            u1, u2, wiLocal, f, pdf) ||
-                pdf <= 0.0)
-                break;
-            wi = frameToWorld(frame, wiLocal);
-        }
-        if (dot(wi, ng) <= 0.0) break; // below the true surface: light leak otherwise
-        beta *= f * (wiLocal.z / pdf);
-        scatterPdfOfDir = pdf;
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        neeOfDir = vertexNee;
-        misNeeOfDir = kind != kSamplerEnv && ds.cEnv == 1.0;
-#endif
-
-        if (int(depth) >= kRussianRouletteDepth) {
-            float q = max(kMinContinueProbability, 1.0 - max(beta.r, max(beta.g, beta.b)));
-            if (psNext1D(rng) < q) break;
-            beta /= 1.0 - q;
-        }
-        origin = next;
-        dir = wi;
+        while (more) more = scatterVertex(false, st);
     }
-    accumulation[pixelIndex] = packWords4(words4(accumulation[pixelIndex]) + vec4(L, 1.0));
+    accumulation[st.pixelIndex] =
+        packWords4(words4(accumulation[st.pixelIndex]) + vec4(st.L, 1.0));
 }

@@ -1,0 +1,245 @@
+// One scattering vertex of path_tracer.comp's path loop (docs/estimator.md): the hit's emission,
+// next-event estimation of the lights and (with direction samplers) of the environment, the
+// continuation's draw and Russian roulette, then the continuation ray traced, with the light it
+// meets or the environment it escapes to. Included by path_tracer.comp after its buffers,
+// params, envRadiance, emissionAlongRay and nextEvent.
+//
+// Why a function called from two places: on lavapipe, product code anywhere in the loop made
+// every vertex of a `wavelet` path pay for it (the vertex sampler's kind, its shares and the
+// escape's pdf became run-time values, so the general mixture's code stayed live at every
+// vertex: a pass cost ~1.5x `mis`'s even with the product never drawn). `wavelet` draws from a
+// product only at its camera vertex (kWaveletProductVertices = 1), so main() calls this once
+// with productVertex true for that vertex and then loops with false; the argument is a literal at
+// each call, so each inlined copy keeps only its own code and the loop's copy is `mis`'s
+// (docs/performance.md "Wavelet pass cost, round 5").
+#ifndef WAVELIT_PATH_VERTEX_GLSL
+#define WAVELIT_PATH_VERTEX_GLSL
+
+#if defined(WAVELIT_DIRECTION_SAMPLERS) && WAVELIT_WAVELET_PRODUCT_VERTICES != 1
+#error "path_vertex.glsl: `wavelet`'s product vertex is the camera vertex alone"
+#endif
+
+const float kRayOffset = 1e-4;             // x max(1, |hit|): scale-aware self-intersection epsilon
+const float kMinContinueProbability = 0.05; // Russian roulette floor
+const int kRussianRouletteDepth = 2;
+
+// A path between vertices: the ray that found the hit (tri, t, b1, b2) at `depth`, what the path
+// has gathered (L) and carries (beta), its random stream.
+struct PathState {
+    vec3 origin;
+    vec3 dir;
+    uint tri;
+    float t, b1, b2;
+    uint depth;
+    vec3 L;
+    vec3 beta;
+    PathSampler rng;
+    uint pixelIndex;
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+    uint cacheAt; // the pixel's cached camera-vertex mixture (sampling/product_cache.glsl)
+#endif
+};
+
+// The environment seen by the continuation ray that escaped: MIS-weighted against the vertex's
+// env NEE technique `ds` when it had one (neeOfDir). mis (misNee: ds is the env technique alone
+// with `mis`'s weights): one texel lookup gives both the radiance and that technique's pdf.
+void addEscapedEnvironment(inout PathState st, float scatterPdf, bool neeOfDir, bool misNee
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+                           , DirSampler ds
+#endif
+) {
+    vec3 radiance;
+    float w = 1.0;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    const uint kind = WAVELIT_SAMPLER_KIND;
+    if (neeOfDir && misNee) {
+        uvec2 exactSize = envExactSize(ds.exactOffset);
+        uvec2 texel = equirectTexelOf(st.dir, ds.cosSinYaw, exactSize);
+        w = powerHeuristic(scatterPdf, float(envExactTexelPdfSized(ds.exactOffset, exactSize, texel)));
+        radiance = envTexelRadiance(texel);
+    } else {
+        if (neeOfDir)
+            w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdf, dsPdf(ds, st.dir));
+        radiance = envRadiance(st.dir);
+    }
+#else
+    radiance = envRadiance(st.dir);
+#endif
+    vec3 escaped = st.beta * (w * radiance);
+    st.L += escaped;
+#ifdef WAVELIT_LIGHT_GROUPS
+    splatGroup(environmentGroup, st.pixelIndex, escaped);
+#endif
+}
+
+// Traces st's ray from st.origin along st.dir: the analytic lights it crosses (MIS-weighted
+// against scatterPdf, the pdf the vertex drew dir with, unless it is the camera ray), and
+// whether it hit a surface (st.tri, t, b1, b2 then hold the hit).
+bool traceSegment(inout PathState st, float scatterPdf, bool cameraRay) {
+    uint triangleCount = params.size.w;
+    uint lightCount = params.envSize.w;
+    bool found =
+        bvhTrace(st.origin, st.dir, 0.0, kFloatMax, false, triangleCount, st.tri, st.t, st.b1, st.b2);
+    if (lightCount > 0u)
+        st.L += st.beta * emissionAlongRay(st.origin, st.dir, st.t, !found, scatterPdf, cameraRay,
+                                           lightCount, params.lightInfo.x, st.beta, st.pixelIndex);
+    return found;
+}
+
+// The vertex at st's hit and its continuation (above); false when the path ends there.
+// productVertex: `wavelet`'s camera vertex, which may draw its env NEE from the pixel's product.
+bool scatterVertex(bool productVertex, inout PathState st) {
+    uint bounces = params.size.z;
+    uint triangleCount = params.size.w;
+    uint materialCount = params.envSize.z;
+    uint lightCount = params.envSize.w;
+    float selection = params.lightInfo.x;
+
+    BvhTriangle T = loadTriangle(st.tri);
+    vec3 position = st.origin + st.t * st.dir;
+    vec3 ng = normalize(cross(T.v1.xyz - T.v0.xyz, T.v2.xyz - T.v0.xyz));
+    if (dot(ng, st.dir) > 0.0) ng = -ng;
+    float b0 = 1.0 - st.b1 - st.b2;
+    vec3 ns = b0 * T.n0.xyz + st.b1 * T.n1.xyz + st.b2 * T.n2.xyz;
+    float len = length(ns);
+    ns = len > 0.0 ? ns / len : ng;
+    if (dot(ns, ng) < 0.0) ns = -ns;
+    if (dot(-st.dir, ns) <= 0.0) ns = ng;
+
+    uint m = min(uint(max(T.v0.w, 0.0)), materialCount - 1u);
+    Material mat = loadMaterial(m);
+    st.L += st.beta * mat.emissionType.rgb;
+#ifdef WAVELIT_LIGHT_GROUPS
+    if (any(notEqual(mat.emissionType.rgb, vec3(0.0))))
+        splatGroup(emissionGroup, st.pixelIndex, st.beta * mat.emissionType.rgb);
+#endif
+    if (st.depth == bounces) return false;
+
+    Frame frame = frameFromNormal(ns);
+    uint brdfType = uint(mat.emissionType.a);
+    vec3 baseColor = mat.baseColorRoughness.rgb;
+    float roughness = mat.baseColorRoughness.a;
+    vec3 wo = frameToLocal(frame, -st.dir);
+    // Lights are sampled from the continuation-ray origin, as the CPU tracer does.
+    vec3 next = position + ng * (kRayOffset * max(1.0, length(position)));
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    // The tracer's sampler is fixed when its pipeline is made (gpu_path_tracer.cpp defines it):
+    // a constant lets the compiler drop the other kinds' code (uniform/cosine continuations, the
+    // general mixture set-up and pdfs); params.samplerInfo.x carries the same code.
+    // docs/performance.md "`mis` pass cost, round 3": -0.65 of a 10.6 CPU-s `mis` pass.
+    const uint kind = WAVELIT_SAMPLER_KIND;
+    bool lit = params.samplerInfo.y != 0u;
+    // The kinds whose vertex sampler draws the continuation (else it is the env NEE technique).
+    bool continuationFromSampler = kind == kSamplerUniform || kind == kSamplerCosine;
+    bool envNee = kind == kSamplerEnv || kind == kSamplerMis || kind == kSamplerWavelet ||
+                  kind == kSamplerOracle;
+    SamplerGlobals globals;
+    // mis's NEE: the env alone; wavelet's too past its product vertex (vertexSamplerKind).
+    bool envTechniqueHere = kind == kSamplerMis || (kind == kSamplerWavelet && !productVertex);
+    globals.kind = envTechniqueHere ? kSamplerEnv : kind;
+    globals.lit = lit;
+    globals.tailOffset = params.samplerInfo.z;
+    globals.envLevel = int(params.samplerInfo.w);
+    globals.envMean = params.samplerEnv.x;
+    globals.cosSinYaw = params.envRotation.xy;
+    bool vertexNee = envNee && lit;
+    DirSampler ds;
+#ifdef WAVELIT_PRODUCT_CACHE_BINDING
+    // wavelet: the camera vertex of a product material draws from the pixel's cached mixture
+    // (its centre hit the same material), every other vertex (and a camera vertex the cache
+    // does not hold) uses `mis`'s technique — bsdf alone for a material without tables, as
+    // dsSetup would; the product code lives in pcBuild alone.
+    if (vertexNee) {
+        SamplerMaterial sm = samplerMaterials[m];
+        if (!(productVertex && pcCacheableMode(sm.mode) &&
+              pcLoad(st.cacheAt, m, globals, brdfType, baseColor, roughness, ds))) {
+            globals.kind = productVertex && sm.mode == kModeBsdfOnly ? kSamplerBsdf : kSamplerEnv;
+            ds = dsSetupWith(false, globals, sm, frame, wo, brdfType, baseColor, roughness);
+        }
+    }
+#else
+    if (continuationFromSampler || vertexNee)
+        ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType, baseColor, roughness);
+#endif
+#endif
+    if (lightCount > 0u) {
+        float uSelect = psNext1D(st.rng);
+        vec2 ul = psNext2D(st.rng);
+        vec3 direct = st.beta * nextEvent(brdfType, baseColor, roughness, frame, wo, ng, next,
+                                          uSelect, ul.x, ul.y, lightCount, selection, triangleCount
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+                                          , ds, continuationFromSampler
+#endif
+        );
+        st.L += direct;
+#ifdef WAVELIT_LIGHT_GROUPS
+        splatGroup(groupOfLight[min(uint(uSelect * float(lightCount)), lightCount - 1u)],
+                   st.pixelIndex, direct);
+#endif
+    }
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    if (envNee) {
+        vec2 ue = psNext2D(st.rng);
+        float ue3 = psNext1D(st.rng);
+        if (vertexNee) {
+            // The env technique alone (mis, wavelet's env-only vertices, env): one texel
+            // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
+            bool techniqueOnly = ds.cEnv == 1.0;
+            bool roulette = techniqueOnly && kind != kSamplerEnv;
+            vec3 envDirect = st.beta * envNextEvent(ds, techniqueOnly, roulette, st.beta, brdfType,
+                                                    baseColor, roughness, frame, wo, ng, next,
+                                                    ue.x, ue.y, ue3, kind == kSamplerEnv,
+                                                    triangleCount);
+            st.L += envDirect;
+#ifdef WAVELIT_LIGHT_GROUPS
+            splatGroup(environmentGroup, st.pixelIndex, envDirect);
+#endif
+        }
+    }
+#endif
+
+    vec2 u12 = psNext2D(st.rng);
+    float u1 = u12.x, u2 = u12.y;
+    vec3 wiLocal, f;
+    float pdf;
+    vec3 wi;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    if (continuationFromSampler) {
+        // The mixture's draw; the estimator divides by its pdf (architecture.md §4).
+        float u3 = psNext1D(st.rng);
+        vec3 wiWorld;
+        if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) return false;
+        wiLocal = frameToLocal(frame, wiWorld);
+        if (wiLocal.z <= 0.0) return false;
+        f = brdfEval(brdfType, baseColor, roughness, wo, wiLocal);
+        wi = wiWorld;
+    } else
+#endif
+    {
+        if (!brdfSample(brdfType, baseColor, roughness, wo, u1, u2, wiLocal, f, pdf) || pdf <= 0.0)
+            return false;
+        wi = frameToWorld(frame, wiLocal);
+    }
+    if (dot(wi, ng) <= 0.0) return false; // below the true surface: light leak otherwise
+    st.beta *= f * (wiLocal.z / pdf);
+
+    if (int(st.depth) >= kRussianRouletteDepth) {
+        float q = max(kMinContinueProbability, 1.0 - max(st.beta.r, max(st.beta.g, st.beta.b)));
+        if (psNext1D(st.rng) < q) return false;
+        st.beta /= 1.0 - q;
+    }
+    st.origin = next;
+    st.dir = wi;
+    st.depth += 1u;
+    if (traceSegment(st, pdf, false)) return true;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    // The vertex estimated direct env light by NEE with ds; with `mis`'s weights when ds is the
+    // env technique alone.
+    addEscapedEnvironment(st, pdf, vertexNee, kind != kSamplerEnv && ds.cEnv == 1.0, ds);
+#else
+    addEscapedEnvironment(st, pdf, false, false);
+#endif
+    return false;
+}
+
+#endif
