@@ -1,8 +1,8 @@
 // Progressive path tracer, one sample per pixel per dispatch added to a float sum buffer.
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/reference/cpu_path_tracer.cpp within noise.
-// A scattering vertex and its continuation ray are path_vertex.glsl's scatterVertex; main() traces
-// the camera ray and calls it per vertex.
+// The loop's two steps, a ray traced and a scattering vertex shaded, are path_vertex.glsl's
+// traceSegment and shadeVertex (which says why main() has two code shapes).
 // Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
 // defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
 // sampling/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
@@ -196,22 +196,26 @@ void main() {
                 cg, params.size.w, params.envSize.z);
     }
 #endif
-    // The camera ray: lights and the environment it sees unweighted.
-    if (!traceSegment(st, 0.0, true)) {
+    st.scatterPdf = 0.0;
+    st.neeOfDir = false;
+    st.misNeeOfDir = false;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-        DirSampler none;
-        addEscapedEnvironment(st, 0.0, false, false, none);
+    const bool wavelet = WAVELIT_SAMPLER_KIND == kSamplerWavelet;
 #else
-        addEscapedEnvironment(st, 0.0, false, false);
+    const bool wavelet = false;
 #endif
-    } else {
-        bool more = true;
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-        // `wavelet`'s camera vertex in its own copy, the only one with the product code
-        // (path_vertex.glsl).
-        if (WAVELIT_SAMPLER_KIND == kSamplerWavelet) more = scatterVertex(true, st);
+#ifdef WAVELIT_SPLIT_CAMERA_VERTEX
+    if (wavelet) {
+        // `wavelet`'s camera vertex and its continuation in their own copies (path_vertex.glsl).
+        if (traceSegment(false, st) && shadeVertex(true, st) && traceSegment(true, st))
+            while (shadeVertex(false, st) && traceSegment(false, st)) {}
+    } else
 #endif
-        while (more) more = scatterVertex(false, st);
+    {
+        for (;;) {
+            if (!traceSegment(wavelet && st.depth == 1u, st)) break;
+            if (!shadeVertex(wavelet && st.depth == 0u, st)) break;
+        }
     }
     accumulation[st.pixelIndex] =
         packWords4(words4(accumulation[st.pixelIndex]) + vec4(st.L, 1.0));

@@ -1,17 +1,21 @@
-// One scattering vertex of path_tracer.comp's path loop (docs/estimator.md): the hit's emission,
-// next-event estimation of the lights and (with direction samplers) of the environment, the
-// continuation's draw and Russian roulette, then the continuation ray traced, with the light it
-// meets or the environment it escapes to. Included by path_tracer.comp after its buffers,
-// params, envRadiance, emissionAlongRay and nextEvent.
+// The steps of path_tracer.comp's path loop (docs/estimator.md): traceSegment follows a ray to
+// its hit, adding the analytic lights it crosses and, when it escapes, the environment (MIS-
+// weighted against the NEE of the vertex that drew it); shadeVertex is the hit's scattering
+// vertex: its emission, next-event estimation of the lights and (with direction samplers) of
+// the environment, the continuation's draw and Russian roulette. Included by path_tracer.comp
+// after its buffers, params, envRadiance, emissionAlongRay and nextEvent.
 //
-// Why a function called from two places: on lavapipe, product code anywhere in the loop made
-// every vertex of a `wavelet` path pay for it (the vertex sampler's kind, its shares and the
-// escape's pdf became run-time values, so the general mixture's code stayed live at every
-// vertex: a pass cost ~1.5x `mis`'s even with the product never drawn). `wavelet` draws from a
-// product only at its camera vertex (kWaveletProductVertices = 1), so main() calls this once
-// with productVertex true for that vertex and then loops with false; the argument is a literal at
-// each call, so each inlined copy keeps only its own code and the loop's copy is `mis`'s
-// (docs/performance.md "Wavelet pass cost, round 5").
+// Two code shapes, the same estimator and the same images (main() in path_tracer.comp):
+// - one loop, trace then shade, each step's copy serving every vertex: a GPU runs one copy of
+//   the traversal and vertex code (an H200 pass of `wavelet` is 1.4x slower with the split below);
+// - WAVELIT_SPLIT_CAMERA_VERTEX (the driver defines it on CPU devices, for `wavelet`): the camera
+//   vertex and its continuation's escape in their own inlined copies (productVertex /
+//   productBefore true, literals), then the loop with false. `wavelet` draws from a product only
+//   at its camera vertex (kWaveletProductVertices = 1), so the loop's copies are `mis`'s. On
+//   lavapipe, product code anywhere in the one loop made every vertex pay for it (the sampler's
+//   kind, shares and escape pdf were run-time values, the general mixture's code live at every
+//   vertex, and its SIMD lanes pay for the live values): 1.85 -> 1.57 CPU-s a 512^2 pass
+//   (docs/performance.md "Wavelet pass cost, round 5").
 #ifndef WAVELIT_PATH_VERTEX_GLSL
 #define WAVELIT_PATH_VERTEX_GLSL
 
@@ -35,60 +39,71 @@ struct PathState {
     vec3 beta;
     PathSampler rng;
     uint pixelIndex;
+    // The vertex that drew `dir`: its pdf of dir (0 for the camera ray) and whether it estimated
+    // direct env light by NEE with `ds` (neeOfDir), with `mis`'s weights (misNeeOfDir: ds is the
+    // env technique alone).
+    float scatterPdf;
+    bool neeOfDir;
+    bool misNeeOfDir;
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+    DirSampler ds;
+#endif
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
     uint cacheAt; // the pixel's cached camera-vertex mixture (sampling/product_cache.glsl)
 #endif
 };
 
-// The environment seen by the continuation ray that escaped: MIS-weighted against the vertex's
-// env NEE technique `ds` when it had one (neeOfDir). mis (misNee: ds is the env technique alone
-// with `mis`'s weights): one texel lookup gives both the radiance and that technique's pdf.
-void addEscapedEnvironment(inout PathState st, float scatterPdf, bool neeOfDir, bool misNee
-#ifdef WAVELIT_DIRECTION_SAMPLERS
-                           , DirSampler ds
-#endif
-) {
-    vec3 radiance;
+// The environment the ray escaped to, MIS-weighted against the NEE of the vertex that drew it.
+// productBefore false: that vertex is past `wavelet`'s product vertex, so its NEE was `mis`'s env
+// technique (a literal false tells the compiler, and the product's pdf walk drops out).
+void addEscapedEnvironment(bool productBefore, inout PathState st) {
     float w = 1.0;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
     const uint kind = WAVELIT_SAMPLER_KIND;
-    if (neeOfDir && misNee) {
-        uvec2 exactSize = envExactSize(ds.exactOffset);
-        uvec2 texel = equirectTexelOf(st.dir, ds.cosSinYaw, exactSize);
-        w = powerHeuristic(scatterPdf, float(envExactTexelPdfSized(ds.exactOffset, exactSize, texel)));
-        radiance = envTexelRadiance(texel);
-    } else {
-        if (neeOfDir)
-            w = kind == kSamplerEnv ? 0.0 : powerHeuristic(scatterPdf, dsPdf(ds, st.dir));
-        radiance = envRadiance(st.dir);
-    }
-#else
-    radiance = envRadiance(st.dir);
+    if (st.neeOfDir) {
+        if (st.misNeeOfDir || (kind == kSamplerWavelet && !productBefore)) {
+            // `mis`'s weights: one texel lookup gives both the radiance and the technique's pdf.
+            uvec2 exactSize = envExactSize(st.ds.exactOffset);
+            uvec2 texel = equirectTexelOf(st.dir, st.ds.cosSinYaw, exactSize);
+            w = powerHeuristic(st.scatterPdf,
+                               float(envExactTexelPdfSized(st.ds.exactOffset, exactSize, texel)));
+            vec3 escaped = st.beta * (w * envTexelRadiance(texel));
+            st.L += escaped;
+#ifdef WAVELIT_LIGHT_GROUPS
+            splatGroup(environmentGroup, st.pixelIndex, escaped);
 #endif
-    vec3 escaped = st.beta * (w * radiance);
+            return;
+        }
+        w = kind == kSamplerEnv ? 0.0 : powerHeuristic(st.scatterPdf, dsPdf(st.ds, st.dir));
+    }
+#endif
+    vec3 escaped = st.beta * (w * envRadiance(st.dir));
     st.L += escaped;
 #ifdef WAVELIT_LIGHT_GROUPS
     splatGroup(environmentGroup, st.pixelIndex, escaped);
 #endif
 }
 
-// Traces st's ray from st.origin along st.dir: the analytic lights it crosses (MIS-weighted
-// against scatterPdf, the pdf the vertex drew dir with, unless it is the camera ray), and
-// whether it hit a surface (st.tri, t, b1, b2 then hold the hit).
-bool traceSegment(inout PathState st, float scatterPdf, bool cameraRay) {
+// Traces st's ray (the camera ray at depth 0): the analytic lights it crosses, MIS-weighted
+// against the pdf the vertex drew it with (weight 1 for the camera ray), then true with its hit in
+// st.tri, t, b1, b2, or false after adding the environment it escaped to.
+bool traceSegment(bool productBefore, inout PathState st) {
     uint triangleCount = params.size.w;
     uint lightCount = params.envSize.w;
-    bool found =
-        bvhTrace(st.origin, st.dir, 0.0, kFloatMax, false, triangleCount, st.tri, st.t, st.b1, st.b2);
+    bool found = bvhTrace(st.origin, st.dir, 0.0, kFloatMax, false, triangleCount, st.tri, st.t,
+                          st.b1, st.b2);
     if (lightCount > 0u)
-        st.L += st.beta * emissionAlongRay(st.origin, st.dir, st.t, !found, scatterPdf, cameraRay,
-                                           lightCount, params.lightInfo.x, st.beta, st.pixelIndex);
-    return found;
+        st.L += st.beta * emissionAlongRay(st.origin, st.dir, st.t, !found, st.scatterPdf,
+                                           st.depth == 0u, lightCount, params.lightInfo.x, st.beta,
+                                           st.pixelIndex);
+    if (found) return true;
+    addEscapedEnvironment(productBefore, st);
+    return false;
 }
 
-// The vertex at st's hit and its continuation (above); false when the path ends there.
+// The vertex at st's hit; false when the path ends there, else st holds its continuation ray.
 // productVertex: `wavelet`'s camera vertex, which may draw its env NEE from the pixel's product.
-bool scatterVertex(bool productVertex, inout PathState st) {
+bool shadeVertex(bool productVertex, inout PathState st) {
     uint bounces = params.size.z;
     uint triangleCount = params.size.w;
     uint materialCount = params.envSize.z;
@@ -143,7 +158,6 @@ bool scatterVertex(bool productVertex, inout PathState st) {
     globals.envMean = params.samplerEnv.x;
     globals.cosSinYaw = params.envRotation.xy;
     bool vertexNee = envNee && lit;
-    DirSampler ds;
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
     // wavelet: the camera vertex of a product material draws from the pixel's cached mixture
     // (its centre hit the same material), every other vertex (and a camera vertex the cache
@@ -152,14 +166,14 @@ bool scatterVertex(bool productVertex, inout PathState st) {
     if (vertexNee) {
         SamplerMaterial sm = samplerMaterials[m];
         if (!(productVertex && pcCacheableMode(sm.mode) &&
-              pcLoad(st.cacheAt, m, globals, brdfType, baseColor, roughness, ds))) {
+              pcLoad(st.cacheAt, m, globals, brdfType, baseColor, roughness, st.ds))) {
             globals.kind = productVertex && sm.mode == kModeBsdfOnly ? kSamplerBsdf : kSamplerEnv;
-            ds = dsSetupWith(false, globals, sm, frame, wo, brdfType, baseColor, roughness);
+            st.ds = dsSetupWith(false, globals, sm, frame, wo, brdfType, baseColor, roughness);
         }
     }
 #else
     if (continuationFromSampler || vertexNee)
-        ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType, baseColor, roughness);
+        st.ds = dsSetup(globals, samplerMaterials[m], frame, wo, brdfType, baseColor, roughness);
 #endif
 #endif
     if (lightCount > 0u) {
@@ -168,7 +182,7 @@ bool scatterVertex(bool productVertex, inout PathState st) {
         vec3 direct = st.beta * nextEvent(brdfType, baseColor, roughness, frame, wo, ng, next,
                                           uSelect, ul.x, ul.y, lightCount, selection, triangleCount
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-                                          , ds, continuationFromSampler
+                                          , st.ds, continuationFromSampler
 #endif
         );
         st.L += direct;
@@ -184,12 +198,12 @@ bool scatterVertex(bool productVertex, inout PathState st) {
         if (vertexNee) {
             // The env technique alone (mis, wavelet's env-only vertices, env): one texel
             // lookup; `mis`'s roulette wherever the NEE is mis's (not for `env`).
-            bool techniqueOnly = ds.cEnv == 1.0;
+            bool techniqueOnly = st.ds.cEnv == 1.0;
             bool roulette = techniqueOnly && kind != kSamplerEnv;
-            vec3 envDirect = st.beta * envNextEvent(ds, techniqueOnly, roulette, st.beta, brdfType,
-                                                    baseColor, roughness, frame, wo, ng, next,
-                                                    ue.x, ue.y, ue3, kind == kSamplerEnv,
-                                                    triangleCount);
+            vec3 envDirect =
+                st.beta * envNextEvent(st.ds, techniqueOnly, roulette, st.beta, brdfType,
+                                       baseColor, roughness, frame, wo, ng, next, ue.x, ue.y, ue3,
+                                       kind == kSamplerEnv, triangleCount);
             st.L += envDirect;
 #ifdef WAVELIT_LIGHT_GROUPS
             splatGroup(environmentGroup, st.pixelIndex, envDirect);
@@ -208,7 +222,7 @@ bool scatterVertex(bool productVertex, inout PathState st) {
         // The mixture's draw; the estimator divides by its pdf (architecture.md §4).
         float u3 = psNext1D(st.rng);
         vec3 wiWorld;
-        if (!dsSample(ds, u1, u2, u3, wiWorld, pdf)) return false;
+        if (!dsSample(st.ds, u1, u2, u3, wiWorld, pdf)) return false;
         wiLocal = frameToLocal(frame, wiWorld);
         if (wiLocal.z <= 0.0) return false;
         f = brdfEval(brdfType, baseColor, roughness, wo, wiLocal);
@@ -231,15 +245,12 @@ bool scatterVertex(bool productVertex, inout PathState st) {
     st.origin = next;
     st.dir = wi;
     st.depth += 1u;
-    if (traceSegment(st, pdf, false)) return true;
+    st.scatterPdf = pdf;
 #ifdef WAVELIT_DIRECTION_SAMPLERS
-    // The vertex estimated direct env light by NEE with ds; with `mis`'s weights when ds is the
-    // env technique alone.
-    addEscapedEnvironment(st, pdf, vertexNee, kind != kSamplerEnv && ds.cEnv == 1.0, ds);
-#else
-    addEscapedEnvironment(st, pdf, false, false);
+    st.neeOfDir = vertexNee;
+    st.misNeeOfDir = kind != kSamplerEnv && st.ds.cEnv == 1.0;
 #endif
-    return false;
+    return true;
 }
 
 #endif

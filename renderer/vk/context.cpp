@@ -180,6 +180,7 @@ util::Result<std::unique_ptr<Context>> Context::create(const ContextOptions& opt
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(ctx->m_physical, &props);
     ctx->m_deviceName = props.deviceName;
+    ctx->m_cpuDevice = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     ctx->m_limits = props.limits;
     vkGetPhysicalDeviceMemoryProperties(ctx->m_physical, &ctx->m_memory);
 

@@ -44,6 +44,9 @@ public:
     VkQueue queue() const { return m_queue; }
     uint32_t queueFamily() const { return m_queueFamily; }
     const std::string& deviceName() const { return m_deviceName; }
+    // A CPU implementation (lavapipe): kernels may take another code shape there (its SIMD
+    // lanes pay for every live value of a loop, a GPU for every extra copy of its code).
+    bool cpuDevice() const { return m_cpuDevice; }
     const VkPhysicalDeviceLimits& limits() const { return m_limits; }
     // shaderFloat64 is enabled when the device has it (the direction samplers need it).
     bool hasFloat64() const { return m_float64; }
@@ -73,6 +76,7 @@ private:
     VkQueue m_queue = VK_NULL_HANDLE;
     uint32_t m_queueFamily = 0;
     std::string m_deviceName;
+    bool m_cpuDevice = false;
     VkPhysicalDeviceLimits m_limits{};
     bool m_float64 = false;
     VkPhysicalDeviceMemoryProperties m_memory{};

@@ -92,6 +92,13 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     }
     if (pt->m_productCompiled)
         compile.defines.push_back("WAVELIT_PRODUCT_SAMPLER=1");
+    // `wavelet`'s camera vertex in its own copy of the vertex code on a CPU device alone
+    // (path_vertex.glsl; docs/performance.md "Wavelet pass cost, round 5": it cut lavapipe's
+    // pass by a quarter and made an H200's 1.4x slower). Same images either way; env
+    // WAVELIT_KERNEL_SHAPE=split|loop overrides the rule (tests compare the two shapes).
+    const std::string shape = gpu_tracer::envOr("WAVELIT_KERNEL_SHAPE", "");
+    if (shape == "split" || (shape != "loop" && pt->m_context->cpuDevice()))
+        compile.defines.push_back("WAVELIT_SPLIT_CAMERA_VERTEX=1");
     // Only the oracle needs the larger private pyramid (2^5 leaves instead of the wavelet's).
     if (options.sampler == SamplerKind::Oracle)
         compile.defines.push_back("WAVELIT_ORACLE_SAMPLER=1");
