@@ -14,8 +14,8 @@
 //   at its camera vertex (kWaveletProductVertices = 1), so the loop's copies are `mis`'s. On
 //   lavapipe, product code anywhere in the one loop made every vertex pay for it (the sampler's
 //   kind, shares and escape pdf were run-time values, the general mixture's code live at every
-//   vertex, and its SIMD lanes pay for the live values): 1.85 -> 1.57 CPU-s a 512^2 pass
-//   (docs/performance.md "Wavelet pass cost, round 5").
+//   vertex, and its SIMD lanes pay for the live values): a 512^2 pass 1.44-1.64 -> 1.12-1.26
+//   CPU-s (docs/performance.md "Wavelet pass cost, round 5").
 #ifndef WAVELIT_PATH_VERTEX_GLSL
 #define WAVELIT_PATH_VERTEX_GLSL
 
