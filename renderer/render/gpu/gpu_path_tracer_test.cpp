@@ -23,12 +23,39 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
 
 namespace wavelit::render {
 namespace {
 
 using namespace gpu_tracer_test;
 namespace fs = std::filesystem;
+
+// Sets an environment variable for a scope and puts back its previous value (or its absence),
+// also when an ASSERT leaves the test early, so later tests see the environment they started with.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const std::string& value) : m_name(name) {
+        const char* previous = std::getenv(name);
+        m_hadValue = previous != nullptr;
+        if (previous)
+            m_previous = previous;
+        setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (m_hadValue)
+            setenv(m_name, m_previous.c_str(), 1);
+        else
+            unsetenv(m_name);
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* m_name;
+    bool m_hadValue = false;
+    std::string m_previous;
+};
 
 // Acceptance bound of issue 3 for the closed-form mean.
 constexpr double kMeanTolerance = 0.05;
@@ -247,15 +274,13 @@ TEST(GpuPathTracer, KernelShapesRenderTheSameImage) {
         makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e4, 13.0);
     auto scene = glossySphereOnGround(sunSky.image, 0.2f);
     auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    const char* previous = std::getenv("WAVELIT_KERNEL_SHAPE");
-    const std::string saved = previous ? previous : "";
     for (SamplerKind kind : {SamplerKind::Wavelet, SamplerKind::Mis}) {
         RenderOptions options = testOptions(4);
         options.sampler = kind;
         util::ImageRGB images[2];
         const char* shapes[2] = {"loop", "split"};
         for (int i = 0; i < 2; ++i) {
-            setenv("WAVELIT_KERNEL_SHAPE", shapes[i], 1);
+            ScopedEnv shape("WAVELIT_KERNEL_SHAPE", shapes[i]);
             auto gpu = createGpuPathTracer(scene, bvh, options);
             ASSERT_TRUE(gpu.ok()) << gpu.error().message();
             images[i] = renderPasses(**gpu, 3);
@@ -268,10 +293,6 @@ TEST(GpuPathTracer, KernelShapesRenderTheSameImage) {
             differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
         EXPECT_EQ(differing, 0) << samplerKindName(kind);
     }
-    if (previous)
-        setenv("WAVELIT_KERNEL_SHAPE", saved.c_str(), 1);
-    else
-        unsetenv("WAVELIT_KERNEL_SHAPE");
 }
 
 TEST(GpuPathTracer, ShaderCompileErrorNamesFileAndLine) {
@@ -279,17 +300,13 @@ TEST(GpuPathTracer, ShaderCompileErrorNamesFileAndLine) {
     fs::create_directories(dir);
     std::ofstream(dir / "path_tracer.comp") << "#version 460\nlayout(local_size_x = 8) in;\n"
                                                "void main() {\n    int x = notDeclared;\n}\n";
-    const char* previous = std::getenv("WAVELIT_SHADER_DIR");
-    const std::string saved = previous ? previous : "";
-    setenv("WAVELIT_SHADER_DIR", dir.string().c_str(), 1);
     scene::Material mat;
     auto scene = makeFurnaceScene(mat, glm::vec3(1.0f), 8, 4);
     auto bvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*scene));
-    auto gpu = createGpuPathTracer(scene, bvh, testOptions(1, 8, 8));
-    if (previous)
-        setenv("WAVELIT_SHADER_DIR", saved.c_str(), 1);
-    else
-        unsetenv("WAVELIT_SHADER_DIR");
+    auto gpu = [&] {
+        ScopedEnv shaders("WAVELIT_SHADER_DIR", dir.string());
+        return createGpuPathTracer(scene, bvh, testOptions(1, 8, 8));
+    }();
     ASSERT_FALSE(gpu.ok());
     std::string message = gpu.error().message();
     EXPECT_NE(message.find("path_tracer.comp"), std::string::npos) << message;
