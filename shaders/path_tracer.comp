@@ -44,7 +44,6 @@ layout(std140, binding = 0) readonly buffer Params { // not a uniform block: gpu
 layout(push_constant) uniform Pass {
     uint seedKey; // util::PathSampler::seedKey(options.seed)
     uint index;   // RenderOptions::firstPass + the passes since the last reset
-    uint buildCache; // 1: build the per-pixel product cache first (sampling/product_cache.glsl)
 } pass;
 
 // The scene buffers are declared through their 64-bit views (common/packed64.glsl: half the
@@ -164,6 +163,31 @@ vec3 nextEvent(uint type, vec3 baseColor, float roughness, Frame frame, vec3 wo,
 
 #include "path_vertex.glsl"
 
+#ifdef WAVELIT_BUILD_PRODUCT_CACHE
+// The product cache's own kernel (gpu_path_tracer_pass.cpp dispatches it over each piece of the
+// first pass after a reset, before the tracing kernel): each pixel's camera-vertex mixture, built
+// from the pixel centre's hit. Its code lives in a pipeline of its own because carried in the
+// tracing kernel as a branch taken once per reset, it cost every lavapipe pass ~10%
+// (docs/performance.md "Wavelet pass cost, round 6").
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uvec2 size = params.size.xy;
+    if (pixel.x >= size.x || pixel.y >= size.y) return;
+    uint at = productCache[pixel.y * size.x + pixel.x];
+    if (at == kNoCacheEntry || params.samplerInfo.y == 0u) return;
+    SamplerGlobals cg;
+    cg.kind = WAVELIT_SAMPLER_KIND;
+    cg.lit = true;
+    cg.tailOffset = params.samplerInfo.z;
+    cg.envLevel = int(params.samplerInfo.w);
+    cg.envMean = params.samplerEnv.x;
+    cg.cosSinYaw = params.envRotation.xy;
+    pcBuild(at, params.camPosition.xyz,
+            cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
+                            params.camForward.w, params.camRight.w, size, pixel, 0.5, 0.5),
+            cg, params.size.w, params.envSize.z);
+}
+#else
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     uvec2 size = params.size.xy;
@@ -180,21 +204,8 @@ void main() {
     st.L = vec3(0.0);
     st.beta = vec3(1.0);
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
-    // The pixel's cached camera-vertex mixture, built in the first pass after a reset.
+    // The pixel's cached camera-vertex mixture (built by the cache kernel below).
     st.cacheAt = productCache[st.pixelIndex];
-    if (pass.buildCache != 0u && st.cacheAt != kNoCacheEntry && params.samplerInfo.y != 0u) {
-        SamplerGlobals cg;
-        cg.kind = WAVELIT_SAMPLER_KIND;
-        cg.lit = true;
-        cg.tailOffset = params.samplerInfo.z;
-        cg.envLevel = int(params.samplerInfo.w);
-        cg.envMean = params.samplerEnv.x;
-        cg.cosSinYaw = params.envRotation.xy;
-        pcBuild(st.cacheAt, st.origin,
-                cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
-                                params.camForward.w, params.camRight.w, size, pixel, 0.5, 0.5),
-                cg, params.size.w, params.envSize.z);
-    }
 #endif
     st.scatterPdf = 0.0;
     st.neeOfDir = false;
@@ -220,3 +231,4 @@ void main() {
     accumulation[st.pixelIndex] =
         packWords4(words4(accumulation[st.pixelIndex]) + vec4(st.L, 1.0));
 }
+#endif

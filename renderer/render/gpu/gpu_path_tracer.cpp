@@ -146,6 +146,19 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!kernel)
         return kernel.error();
     pt->m_kernel = std::move(kernel.value());
+    if (pt->m_productCacheCompiled) {
+        // The cache's build in a pipeline of its own: carried in the tracing kernel (a branch
+        // taken in one pass per reset) it cost every lavapipe `wavelet` pass ~10% (issue 12).
+        compile.defines.push_back("WAVELIT_BUILD_PRODUCT_CACHE=1");
+        auto buildSpirv = compileFileWithBrdfDispatch(shaderPath, compile, pt->m_brdfPluginsCompiled);
+        if (!buildSpirv)
+            return buildSpirv.error();
+        auto cacheKernel = vk::ComputeKernel::create(
+            *pt->m_context, {"product_cache_build", std::move(buildSpirv.value()), bindings, sizeof(PassPush)});
+        if (!cacheKernel)
+            return cacheKernel.error();
+        pt->m_cacheKernel = std::move(cacheKernel.value());
+    }
     pt->m_timings.pipelineSeconds = timer.seconds();
 
     timer.restart();
@@ -160,7 +173,7 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!accumulation)
         return accumulation.error();
     pt->m_accumulation = std::move(accumulation.value());
-    pt->m_kernel.bind(kAccumulation, pt->m_accumulation);
+    pt->bindAll(kAccumulation, pt->m_accumulation);
     pt->m_accumulation.fill(0);
     auto runner = vk::CommandRunner::create(*pt->m_context, "path tracer");
     if (!runner)
@@ -168,6 +181,12 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     pt->m_runner = std::move(runner.value());
     pt->m_timings.uploadSeconds = timer.seconds();
     return std::unique_ptr<Integrator>(std::move(pt));
+}
+
+void GpuPathTracer::bindAll(uint32_t binding, const vk::Buffer& buffer) {
+    m_kernel.bind(binding, buffer);
+    if (m_productCacheCompiled)
+        m_cacheKernel.bind(binding, buffer);
 }
 
 } // namespace gpu_tracer

@@ -12,7 +12,7 @@ util::Status GpuPathTracer::uploadBrdfTables(const std::vector<float>& tables) {
         auto b = upload(nullptr, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "BRDF tables");
         if (!b) return b.error();
         m_brdfTables = std::move(b.value());
-        m_kernel.bind(m_brdfTableBinding, m_brdfTables);
+        bindAll(m_brdfTableBinding, m_brdfTables);
     }
     m_brdfTables.write(tables.data(), bytes);
     return util::okStatus();

@@ -23,7 +23,7 @@ util::Status GpuPathTracer::prepareProductCache() {
         if (!buffer)
             return buffer.error();
         m_productCache = std::move(buffer.value());
-        m_kernel.bind(m_productCacheBinding, m_productCache);
+        bindAll(m_productCacheBinding, m_productCache);
     }
     m_productCache.write(layout.words.data(), bytes);
     ++m_productCacheBuilds;

@@ -37,11 +37,11 @@ util::Status GpuPathTracer::uploadLightGroups(const scene::Scene& scene) {
     }
     if (newInfo.handle() != VK_NULL_HANDLE) {
         m_groupInfo = std::move(newInfo);
-        m_kernel.bind(m_groupBinding, m_groupInfo);
+        bindAll(m_groupBinding, m_groupInfo);
     }
     if (newLayers.handle() != VK_NULL_HANDLE) {
         m_groupLayers = std::move(newLayers);
-        m_kernel.bind(m_groupBinding + 1, m_groupLayers);
+        bindAll(m_groupBinding + 1, m_groupLayers);
         m_groupLayers.fill(0);
     }
     m_groupInfo.write(info.data(), infoBytes);

@@ -58,7 +58,6 @@ std::vector<uint32_t> packGpuLightGroups(const LightGroups& groups, uint64_t pix
 struct PassPush {
     uint32_t seedKey; // util::PathSampler::seedKey(options.seed)
     uint32_t pass;
-    uint32_t buildCache = 0; // 1: the pass first fills the per-pixel product cache (product_cache.h)
 };
 
 // The buffers of a scene in upload order, sized as uploadScene creates them (render_limits.h).
@@ -175,6 +174,11 @@ private:
     BrdfPluginSet m_brdfPluginsCompiled = 0; // the BRDF twins the kernel carries (create)
     size_t m_groupCount = 0;
     vk::ComputeKernel m_kernel;
+    // The product cache's build kernel (path_tracer.comp with WAVELIT_BUILD_PRODUCT_CACHE), run
+    // over each piece of the pass that builds the entries, before m_kernel; only with the cache.
+    vk::ComputeKernel m_cacheKernel;
+    // Points `binding` of every kernel at `buffer` (the kernels share the binding layout).
+    void bindAll(uint32_t binding, const vk::Buffer& buffer);
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
     int m_passes = 0;

@@ -16,7 +16,7 @@ util::Status GpuPathTracer::renderPass() {
         m_productCacheBuilding = true;
     }
     const PassPush push{util::PathSampler::seedKey(m_options.seed),
-                        uint32_t(m_options.firstPass + m_passes), m_productCacheBuilding ? 1u : 0u};
+                        uint32_t(m_options.firstPass + m_passes)};
     const PassTiles tiles = passTiles();
     // Until a piece has been timed, a small first piece: 4 tiles (1024 pixels) take ~45 ms with
     // `wavelet` on lavapipe under load (a 1600x1000 pass took 71 s), the slowest sampler but the
@@ -76,6 +76,10 @@ util::Status GpuPathTracer::dispatchPiece(const PassTiles& tiles, uint32_t first
                            std::min(kTileGroups, tiles.groupsY - y)});
     }
     return m_runner->run([&](VkCommandBuffer cmd) {
+        if (m_productCacheBuilding) { // the piece's cache entries first (m_cacheKernel)
+            m_cacheKernel.dispatchRegions(cmd, regions, &push);
+            vk::computeToComputeAndHostBarrier(cmd);
+        }
         m_kernel.dispatchRegions(cmd, regions, &push);
         vk::computeToComputeAndHostBarrier(cmd);
     });

@@ -213,7 +213,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (auto tables = uploadBrdfTables(d.brdfTables); !tables) return tables;
     for (auto& [i, buffer] : fresh) {
         *uploads[i].target = std::move(buffer);
-        m_kernel.bind(uploads[i].binding, *uploads[i].target);
+        bindAll(uploads[i].binding, *uploads[i].target);
     }
     for (size_t i = 0; i < uploadCount; ++i)
         if (uploads[i].send && uploads[i].data && uploads[i].bytes)
