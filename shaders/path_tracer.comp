@@ -2,7 +2,9 @@
 // Implements docs/estimator.md exactly (RNG streams, camera, environment, surfaces, BRDFs, path
 // loop with Russian roulette) so its mean image matches render/reference/cpu_path_tracer.cpp within noise.
 // The loop's two steps, a ray traced and a scattering vertex shaded, are path_vertex.glsl's
-// traceSegment and shadeVertex (which says why main() has two code shapes).
+// traceSegment and shadeVertex (which says why main() has two code shapes). Compiled with
+// WAVELIT_BUILD_PRODUCT_CACHE, the file is instead the kernel that builds `wavelet`'s per-pixel
+// camera-vertex product cache (the first main() below).
 // Next-event estimation of the analytic lights with MIS (common/lights.glsl). When the driver
 // defines WAVELIT_DIRECTION_SAMPLERS (any --sampler but bsdf), a per-vertex direction sampler of
 // sampling/direction_sampler.glsl (issue 6) either draws the continuation (uniform, cosine; its pdf
@@ -204,7 +206,7 @@ void main() {
     st.L = vec3(0.0);
     st.beta = vec3(1.0);
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
-    // The pixel's cached camera-vertex mixture (built by the cache kernel below).
+    // The pixel's cached camera-vertex mixture (built by the cache kernel above).
     st.cacheAt = productCache[st.pixelIndex];
 #endif
     st.scatterPdf = 0.0;

@@ -3,11 +3,12 @@
 // While an image accumulates, camera and scene are fixed, so the mixture a pixel's camera hit
 // would build (its shares, product window and 2^m x 2^m pyramid: ~1024 BRDF x cos evaluations)
 // is built ONCE, from the pixel centre's hit (jitter 0.5, 0.5), in the first pass after a reset
-// (by the cache's own kernel: path_tracer.comp with WAVELIT_BUILD_PRODUCT_CACHE), and every pass draws from and evaluates the pdf of that stored mixture. The estimator
-// stays unbiased: the pdf divided by is the one sampled from, and the mixture is MIS-weighted
-// against the BSDF continuation of the actual (jittered) hit, which covers its lobe; a jitter
-// that moves the hit only changes how well the proposal fits. The CPU twin (CpuPathTracer::
-// cameraNeeSampler) builds the same mixture from the same centre hit.
+// (by the cache's own kernel: path_tracer.comp with WAVELIT_BUILD_PRODUCT_CACHE), and every pass
+// draws from and evaluates the pdf of that stored mixture. The estimator stays unbiased: the pdf
+// divided by is the one sampled from, and the mixture is MIS-weighted against the BSDF
+// continuation of the actual (jittered) hit, which covers its lobe; a jitter that moves the hit
+// only changes how well the proposal fits. The CPU twin (CpuPathTracer::cameraNeeSampler) builds
+// the same mixture from the same centre hit.
 //
 // Rule at a path's camera vertex whose material's policy forms a product (mode Product or
 // BsdfLobe): the pixel's entry when its centre hit the SAME material, else `mis`'s technique (the

@@ -150,11 +150,13 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
         // The cache's build in a pipeline of its own: carried in the tracing kernel (a branch
         // taken in one pass per reset) it cost every lavapipe `wavelet` pass ~10% (issue 12).
         compile.defines.push_back("WAVELIT_BUILD_PRODUCT_CACHE=1");
-        auto buildSpirv = compileFileWithBrdfDispatch(shaderPath, compile, pt->m_brdfPluginsCompiled);
+        auto buildSpirv =
+            compileFileWithBrdfDispatch(shaderPath, compile, pt->m_brdfPluginsCompiled);
         if (!buildSpirv)
             return buildSpirv.error();
         auto cacheKernel = vk::ComputeKernel::create(
-            *pt->m_context, {"product_cache_build", std::move(buildSpirv.value()), bindings, sizeof(PassPush)});
+            *pt->m_context,
+            {"product_cache_build", std::move(buildSpirv.value()), bindings, sizeof(PassPush)});
         if (!cacheKernel)
             return cacheKernel.error();
         pt->m_cacheKernel = std::move(cacheKernel.value());
