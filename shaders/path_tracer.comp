@@ -106,6 +106,21 @@ vec3 envRadiance(vec3 dir) {
     return environmentRadiance(dir, params.envScale.rgb, params.envRotation.xy, params.envSize.xy);
 }
 
+#ifdef WAVELIT_DIRECTION_SAMPLERS
+// What a vertex sampler reads of the params block (sampler_structs.glsl), for technique `kind`
+// with the env lit or not: a path vertex's and the product cache's build alike.
+SamplerGlobals samplerGlobals(uint kind, bool lit) {
+    SamplerGlobals g;
+    g.kind = kind;
+    g.lit = lit;
+    g.tailOffset = params.samplerInfo.z;
+    g.envLevel = int(params.samplerInfo.w);
+    g.envMean = params.samplerEnv.x;
+    g.cosSinYaw = params.envRotation.xy;
+    return g;
+}
+#endif
+
 // LightSet::emissionAlongRay with the Mis strategy: every light crossed before the surface hit
 // (tMax) or, when the ray escaped, also the sun; weight 1 for camera rays.
 // With light groups, each light's term (times the path throughput beta) also goes to its layer.
@@ -177,17 +192,10 @@ void main() {
     if (pixel.x >= size.x || pixel.y >= size.y) return;
     uint at = productCache[pixel.y * size.x + pixel.x];
     if (at == kNoCacheEntry || params.samplerInfo.y == 0u) return;
-    SamplerGlobals cg;
-    cg.kind = WAVELIT_SAMPLER_KIND;
-    cg.lit = true;
-    cg.tailOffset = params.samplerInfo.z;
-    cg.envLevel = int(params.samplerInfo.w);
-    cg.envMean = params.samplerEnv.x;
-    cg.cosSinYaw = params.envRotation.xy;
     pcBuild(at, params.camPosition.xyz,
             cameraDirection(params.camForward.xyz, params.camRight.xyz, params.camUp.xyz,
                             params.camForward.w, params.camRight.w, size, pixel, 0.5, 0.5),
-            cg, params.size.w, params.envSize.z);
+            samplerGlobals(WAVELIT_SAMPLER_KIND, true), params.size.w, params.envSize.z);
 }
 #else
 void main() {

@@ -3,7 +3,7 @@
 // weighted against the NEE of the vertex that drew it); shadeVertex is the hit's scattering
 // vertex: its emission, next-event estimation of the lights and (with direction samplers) of
 // the environment, the continuation's draw and Russian roulette. Included by path_tracer.comp
-// after its buffers, params, envRadiance, emissionAlongRay and nextEvent.
+// after its buffers, params, envRadiance, samplerGlobals, emissionAlongRay and nextEvent.
 //
 // Two code shapes, the same estimator and the same images (main() in path_tracer.comp):
 // - one loop, trace then shade, each step's copy serving every vertex: a GPU runs one copy of
@@ -148,15 +148,9 @@ bool shadeVertex(bool productVertex, inout PathState st) {
     bool continuationFromSampler = kind == kSamplerUniform || kind == kSamplerCosine;
     bool envNee = kind == kSamplerEnv || kind == kSamplerMis || kind == kSamplerWavelet ||
                   kind == kSamplerOracle;
-    SamplerGlobals globals;
     // mis's NEE: the env alone; wavelet's too past its product vertex (vertexSamplerKind).
     bool envTechniqueHere = kind == kSamplerMis || (kind == kSamplerWavelet && !productVertex);
-    globals.kind = envTechniqueHere ? kSamplerEnv : kind;
-    globals.lit = lit;
-    globals.tailOffset = params.samplerInfo.z;
-    globals.envLevel = int(params.samplerInfo.w);
-    globals.envMean = params.samplerEnv.x;
-    globals.cosSinYaw = params.envRotation.xy;
+    SamplerGlobals globals = samplerGlobals(envTechniqueHere ? kSamplerEnv : kind, lit);
     bool vertexNee = envNee && lit;
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
     // wavelet: the camera vertex of a product material draws from the pixel's cached mixture

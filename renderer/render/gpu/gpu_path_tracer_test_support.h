@@ -1,7 +1,8 @@
 // What the Vulkan path tracer's tests share (gpu_path_tracer_test.cpp,
 // gpu_path_tracer_scene_swap_test.cpp; the light tests take the options too): their options
 // (validation on, 64^2 by default: lavapipe shares two CPU cores with everything else), a small
-// gradient environment, the tracer and its passes. Test-only (GoogleTest): included by test files of the render test executable.
+// gradient environment, the tracer and its passes. Test-only (GoogleTest): included by test
+// files of the render test executable.
 #pragma once
 
 #include "render/session/integrator.h"
