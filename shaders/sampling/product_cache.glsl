@@ -1,7 +1,7 @@
 // The camera vertex's `wavelet` NEE mixture, cached per pixel across passes (issue 12,
 // docs/performance.md "Wavelet pass cost, round 4"; render/gpu/product_cache.h packs the buffer).
 // While an image accumulates, camera and scene are fixed, so the mixture a pixel's camera hit
-// would build (its shares, product window and 2^m x 2^m pyramid: ~1024 BRDF x cos evaluations)
+// would build (its shares, product window and 2^m x 2^m pyramid: 289 BRDF x cos evaluations)
 // is built ONCE, from the pixel centre's hit (jitter 0.5, 0.5), in the first pass after a reset
 // (by the cache's own kernel: path_tracer.comp with WAVELIT_BUILD_PRODUCT_CACHE), and every pass
 // draws from and evaluates the pdf of that stored mixture. The estimator stays unbiased: the pdf

@@ -124,13 +124,14 @@ void DirectionSampler::addProduct(SamplerKind kind) {
             const bool tracer = m_build == ProductBuild::Tracer;
             const int level = tracer ? tracerProductLevel(policy) : policy.productLevel;
             // BRDF x cos averaged over 2x2 points per texel, weighted by the env's sub-cells, so
-            // the product's leaf masses are those of the product at 2x its resolution.
-            const wavelet::SquareGrid brdfGrid = windowTabulateEnvWeightedBatch(
-                env, window, level,
-                [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
-                    brdfCosLuminance(d, out);
-                },
-                2);
+            // the product's leaf masses are those of the product at 2x its resolution; the
+            // tracers' from the texels' corners (the kernel's twin).
+            auto brdfCos = [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
+                brdfCosLuminance(d, out);
+            };
+            const wavelet::SquareGrid brdfGrid =
+                tracer ? windowTabulateEnvWeightedCornersBatch(env, window, level, brdfCos)
+                       : windowTabulateEnvWeightedBatch(env, window, level, brdfCos, 2);
             m_product =
                 tracer ? EnvProductSampler::buildDense(
                              env, window, tracerProductLeaves(tables->envFactor(bin), brdfGrid))

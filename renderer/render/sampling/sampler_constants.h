@@ -59,9 +59,10 @@ inline constexpr int kWaveletProductVertices = 1;
 // The tracers' per-hit product (both tracers' camera vertex; the Vulkan kernel's at every product
 // vertex): the bin's env factor synthesised to at most 2^kTracerMaxProductLevel x
 // 2^kTracerMaxProductLevel leaves (not the policy's 2^5: the kernel keeps the pyramid in private
-// memory and pays ~4^m x 4 BRDF evaluations per build), each leaf's average (clamped at 0) times
-// BRDF x cos env-weighted over its 2 x 2 sub-cells, untruncated; the lobe refinement and the env's
-// quadtree refine below the leaves. DirectionSampler's ProductBuild::Tracer is the C++ build of
+// memory and pays (2^m + 1)^2 BRDF evaluations per build), each leaf's average (clamped at 0)
+// times BRDF x cos env-weighted over its 2 x 2 sub-cells (f cos at the sub-cell centres
+// interpolated from the leaf's corners), untruncated; the lobe refinement and the env's quadtree
+// refine below the leaves. DirectionSampler's ProductBuild::Tracer is the C++ build of
 // it, the paper's sparse product (ProductBuild::Paper) the samplers' reference.
 inline constexpr int kTracerMaxProductLevel = 4;
 // The defensive BSDF share of a narrow mirror lobe's tracer product (kWaveletBsdfShare, 0.1,

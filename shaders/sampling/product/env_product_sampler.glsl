@@ -2,10 +2,11 @@
 // (render/sampling/product/env_product_sampler.h is the CPU side). The GPU forms the product
 // DENSE in private memory (architecture.md §4, the dense path): the bin's env factor (a truncated
 // Haar image, env_product_tables.glsl) is synthesised to its 2^m x 2^m scaling coefficients,
-// m <= WAVELIT_MAX_PRODUCT_LEVEL (2^4: the per-hit cost is ~4^m BRDF evaluations, and below the
-// leaves the env's quadtree refines anyway), each leaf's average times BRDF x cos env-weighted
-// over its 2 x 2 sub-cells; sampling descends that pyramid, the lobe refinement, then the env's
-// quadtree, and the pdf re-walks the same descent (dsDescendProduct).
+// m <= WAVELIT_MAX_PRODUCT_LEVEL (2^4: the per-hit cost is (2^m + 1)^2 BRDF evaluations, and
+// below the leaves the env's quadtree refines anyway), each leaf's average times BRDF x cos
+// env-weighted over its 2 x 2 sub-cells (interpolated from the leaf's corners); sampling descends
+// that pyramid, the lobe refinement, then the env's quadtree, and the pdf re-walks the same
+// descent (dsDescendProduct).
 #ifndef WAVELIT_ENV_PRODUCT_SAMPLER_GLSL
 #define WAVELIT_ENV_PRODUCT_SAMPLER_GLSL
 
@@ -75,27 +76,39 @@ float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
     return float(weight > 0.0LF ? weighted / weight : 0.25LF * plain);
 }
 
-// dsEnvWeightedBrdfCos for the wavelet's leaves, cheaper and equal up to rounding: the BRDF x cos
-// first, and the env's split of the cell only where some sub-cell centre sees f cos > 0 (a leaf
-// wholly below the horizon is 0 either way: about half of a whole-sphere window's leaves); the split
-// from the cell's node alone, since the cell's mass cancels in the weighted mean (its walk from the
-// root multiplied two decoded splits per level; the env is floored above 0, so the mass is never 0).
-// The cell's node is envFindNode's, found from its parent's: `parent` (the env node of cell
-// (l - 1, parentCell), at level parentReached, with its firstChild) is looked up when a call
-// needs it and parentCell is not (x / 2, y / 2) (parent < 0: none yet), and kept for the next
-// calls: one walk from the root per 2 x 2 sibling leaves, not one per leaf (each step a word
-// load on lavapipe).
-float dsLeafBrdfCos(DirSampler s, int l, int x, int y, inout int parent, inout ivec2 parentCell,
-                    inout int parentReached, inout int parentFirstChild) {
-    double side = 1.0LF / double(1 << (l + 1));
-    double f[4];
-    bool lit = false;
-    for (int c = 0; c < 4; ++c) {
-        dvec2 centre = (dvec2(2 * x + (c & 1), 2 * y + (c >> 1)) + 0.5LF) * side;
-        f[c] = double(dsBrdfCos(s, envToWorld(s.cosSinYaw, octToDirection(vec2(centre)))));
-        lit = lit || f[c] > 0.0LF;
+// The wavelet's leaf corners along one row: f cos at the global corner points (gx0 + i, gy) / 2^l,
+// i = 0..side, of the octahedral domain.
+const int kCornerRowLength = (1 << WAVELIT_MAX_PRODUCT_LEVEL) + 1;
+void dsCornerRow(DirSampler s, int l, int gx0, int gy, int side, out float row[kCornerRowLength]) {
+    double cell = 1.0LF / double(1 << l);
+    for (int i = 0; i < kCornerRowLength; ++i) {
+        vec3 corner = octToDirection(vec2(dvec2(gx0 + i, gy) * cell));
+        row[i] = i <= side ? dsBrdfCos(s, envToWorld(s.cosSinYaw, corner)) : 0.0;
     }
-    if (!lit) return 0.0;
+}
+
+// BRDF x cos of the wavelet's leaf (l, x, y) env-weighted over its four sub-cells, as
+// dsEnvWeightedBrdfCos, but with f cos at each sub-cell centre interpolated bilinearly from the
+// leaf's corners (`corner`: (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)), which neighbouring
+// leaves share: (2^m + 1)^2 BRDF evaluations a product instead of 4^(m + 1), the cache build's
+// main cost (docs/performance.md "Wavelet pass cost, round 7"; the CPU's
+// windowTabulateEnvWeightedCorners). A leaf whose corners all see f cos = 0 is 0 (below the
+// horizon: about half of a whole-sphere window's leaves) and skips the env's split. The split
+// comes from the cell's node alone, since the cell's mass cancels in the weighted mean (the env is
+// floored above 0, so the mass is never 0). The cell's node is envFindNode's, found from its
+// parent's: `parent` (the env node of cell (l - 1, parentCell), at level parentReached, with its
+// firstChild) is looked up when a call needs it and parentCell is not (x / 2, y / 2) (parent < 0:
+// none yet), and kept for the next calls: one walk from the root per 2 x 2 sibling leaves, not
+// one per leaf (each step a word load on lavapipe).
+float dsLeafBrdfCos(int l, int x, int y, float corner[4], inout int parent,
+                    inout ivec2 parentCell, inout int parentReached, inout int parentFirstChild) {
+    if (!(corner[0] > 0.0 || corner[1] > 0.0 || corner[2] > 0.0 || corner[3] > 0.0)) return 0.0;
+    double f[4];
+    for (int c = 0; c < 4; ++c) {
+        double u = (c & 1) != 0 ? 0.75LF : 0.25LF, v = (c >> 1) != 0 ? 0.75LF : 0.25LF;
+        f[c] = (1.0LF - u) * (1.0LF - v) * double(corner[0]) + u * (1.0LF - v) * double(corner[1]) +
+               (1.0LF - u) * v * double(corner[2]) + u * v * double(corner[3]);
+    }
     if (parent < 0 || parentCell != ivec2(x >> 1, y >> 1)) {
         parentCell = ivec2(x >> 1, y >> 1);
         parent = envFindNode(l - 1, parentCell.x, parentCell.y, parentReached);
@@ -146,24 +159,36 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
             }
     }
     // Leaves: average env luminance (2^m x the scaling coefficient), clamped at 0 (truncation
-    // leaves negatives), times BRDF x cos env-weighted over the leaf's four sub-cells.
-    // Visited by 2 x 2 blocks, which are sibling leaves sharing their parent's env node when
-    // m >= 2 (the window's origin (ox, oy) << (m - 1) is then even; dsLeafBrdfCos checks).
-    int side = 1 << m, off = pyramidOffset(m);
-    for (int by = 0; by < side; by += 2)
+    // leaves negatives), times BRDF x cos env-weighted over the leaf's four sub-cells
+    // (dsLeafBrdfCos). Visited by 2 x 2 blocks, which are sibling leaves sharing their parent's
+    // env node when m >= 2 (the window's origin (ox, oy) << (m - 1) is then even), a block row at
+    // a time: the corners' f cos of its three rows, the first the row above's last.
+    int side = 1 << m, off = pyramidOffset(m), l = s.k + m;
+    int gx0 = s.ox << (m - 1), gy0 = s.oy << (m - 1);
+    float rows[3][kCornerRowLength];
+    dsCornerRow(s, l, gx0, gy0, side, rows[0]);
+    for (int by = 0; by < side; by += 2) {
+        dsCornerRow(s, l, gx0, gy0 + by + 1, side, rows[1]);
+        dsCornerRow(s, l, gx0, gy0 + by + 2, side, rows[2]);
         for (int bx = 0; bx < side; bx += 2) {
             int parent = -1, parentReached = 0, parentFirstChild = -1;
             ivec2 parentCell = ivec2(0);
+            // The block's 3 x 3 corners.
+            float k[9] = float[9](rows[0][bx], rows[0][bx + 1], rows[0][bx + 2], rows[1][bx],
+                                  rows[1][bx + 1], rows[1][bx + 2], rows[2][bx], rows[2][bx + 1],
+                                  rows[2][bx + 2]);
             for (int c = 0; c < 4; ++c) {
-                int x = bx + (c & 1), y = by + (c >> 1);
+                int x = bx + (c & 1), y = by + (c >> 1), at = 3 * (c >> 1) + (c & 1);
                 float e = max(0.0, gMass[off + y * side + x] * float(side));
-                int gx = (s.ox << (m - 1)) + x, gy = (s.oy << (m - 1)) + y;
+                float corner[4] = float[4](k[at], k[at + 1], k[at + 3], k[at + 4]);
                 gMass[off + y * side + x] =
-                    e > 0.0 ? e * dsLeafBrdfCos(s, s.k + m, gx, gy, parent, parentCell,
+                    e > 0.0 ? e * dsLeafBrdfCos(l, gx0 + x, gy0 + y, corner, parent, parentCell,
                                                 parentReached, parentFirstChild)
                             : 0.0;
             }
         }
+        rows[0] = rows[2];
+    }
     return dsSumPyramid(m);
 }
 

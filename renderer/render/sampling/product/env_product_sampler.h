@@ -92,7 +92,7 @@ wavelet::SquareGrid windowEnvGrid(const SamplerEnvironment& env, ProductWindow w
 // The tracers' product leaves (ProductBuild::Tracer, sampler_constants.h kTracerMaxProductLevel):
 // the truncated env factor's average over each texel of `brdf`'s (coarser or equal) grid, i.e.
 // its synthesis to that level, clamped at 0 (truncation leaves negatives), times the texel's
-// env-weighted BRDF x cos (windowTabulateEnvWeighted). For buildDense.
+// env-weighted BRDF x cos (windowTabulateEnvWeightedCornersBatch). For buildDense.
 wavelet::SquareGrid tracerProductLeaves(const wavelet::SparseHaar& envFactor,
                                         const wavelet::SquareGrid& brdf);
 
@@ -115,6 +115,32 @@ wavelet::SquareGrid windowTabulate(const wavelet::OctahedralMap& map, ProductWin
             grid.at(x, y) = sum / double(supersample * supersample);
         }
     return grid;
+}
+
+// Texel (x, y) of a level-m window grid: sum_s L_s f_s / sum_s L_s over its 2^shift x 2^shift
+// sub-cells s (f row by row; L_s the env's average over the sub-cell), the plain mean where the
+// env is black, 0 where f is 0 throughout (a texel below the horizon).
+inline double envWeightedTexel(const SamplerEnvironment& env, ProductWindow window, int m,
+                               int shift, int x, int y, const double* f) {
+    const int supersample = 1 << shift, n = supersample * supersample;
+    double plain = 0.0;
+    bool lit = false;
+    for (int s = 0; s < n; ++s) {
+        plain += f[s];
+        lit = lit || f[s] != 0.0;
+    }
+    if (!lit)
+        return 0.0;
+    double sum = 0.0, weight = 0.0;
+    for (int j = 0; j < supersample; ++j)
+        for (int i = 0; i < supersample; ++i) {
+            int gl, gx, gy;
+            window.globalCell(m + shift, x * supersample + i, y * supersample + j, gl, gx, gy);
+            const double w = env.cellAverage(gl, gx, gy);
+            sum += w * f[j * supersample + i];
+            weight += w;
+        }
+    return weight > 0.0 ? sum / weight : plain / double(n);
 }
 
 // Tabulates f over a window at level m as its ENV-WEIGHTED average per texel: texel (x, y) holds
@@ -153,28 +179,45 @@ wavelet::SquareGrid windowTabulateEnvWeightedBatch(const SamplerEnvironment& env
     values(directions, v);
     for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x) {
-            const double* f = &v[(size_t(y) * size_t(side) + size_t(x)) * size_t(n)];
-            double plain = 0.0;
-            bool lit = false;
-            for (int s = 0; s < n; ++s) {
-                plain += f[s];
-                lit = lit || f[s] != 0.0;
+            const size_t texel = size_t(y) * size_t(side) + size_t(x);
+            grid.at(x, y) = envWeightedTexel(env, window, m, shift, x, y, &v[texel * size_t(n)]);
+        }
+    return grid;
+}
+
+// windowTabulateEnvWeightedBatch's grid (supersample 2) with f at each sub-cell centre
+// interpolated bilinearly from the texel's corners, which neighbouring texels share: (2^m + 1)^2
+// evaluations instead of 4^(m + 1). The tracers' product leaves (ProductBuild::Tracer; the
+// kernel's dsBuildProduct is the twin): at 16^2 leaves the BRDF evaluations were most of the
+// per-pixel product cache's build, and the interpolated f costs no error per sample
+// (docs/performance.md "Wavelet pass cost, round 7").
+template <typename Values>
+wavelet::SquareGrid windowTabulateEnvWeightedCornersBatch(const SamplerEnvironment& env,
+                                                          ProductWindow window, int m,
+                                                          Values&& values) {
+    wavelet::SquareGrid grid(m);
+    const int side = grid.size(), corners = side + 1;
+    const glm::dvec2 origin = window.origin();
+    const double windowSide = window.side(), inv = 1.0 / double(side);
+    std::vector<glm::dvec3> directions;
+    directions.reserve(size_t(corners) * size_t(corners));
+    for (int y = 0; y <= side; ++y)
+        for (int x = 0; x <= side; ++x)
+            directions.push_back(
+                env.map().toDirection(0, origin + glm::dvec2(x * inv, y * inv) * windowSide));
+    std::vector<double> v(directions.size(), 0.0);
+    values(directions, v);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const double* row = &v[size_t(y) * size_t(corners) + size_t(x)];
+            const double k[4] = {row[0], row[1], row[corners], row[corners + 1]};
+            double f[4];
+            for (int c = 0; c < 4; ++c) {
+                const double u = (c & 1) ? 0.75 : 0.25, w = (c >> 1) ? 0.75 : 0.25;
+                f[c] = (1.0 - u) * (1.0 - w) * k[0] + u * (1.0 - w) * k[1] +
+                       (1.0 - u) * w * k[2] + u * w * k[3];
             }
-            if (!lit) { // 0 whatever the env's weights (a texel below the horizon)
-                grid.at(x, y) = 0.0;
-                continue;
-            }
-            double sum = 0.0, weight = 0.0;
-            for (int j = 0; j < supersample; ++j)
-                for (int i = 0; i < supersample; ++i) {
-                    int gl, gx, gy;
-                    window.globalCell(m + shift, x * supersample + i, y * supersample + j, gl, gx,
-                                      gy);
-                    const double w = env.cellAverage(gl, gx, gy);
-                    sum += w * f[j * supersample + i];
-                    weight += w;
-                }
-            grid.at(x, y) = weight > 0.0 ? sum / weight : plain / double(n);
+            grid.at(x, y) = envWeightedTexel(env, window, m, 1, x, y, f);
         }
     return grid;
 }

@@ -328,5 +328,47 @@ TEST(EnvProductSampler, ReturnedPdfEqualsPdfOfTheDraw) {
     EXPECT_LE(mismatches, 2);
 }
 
+// The tracers' leaves take f at each sub-cell centre bilinearly from the leaf's corners
+// (windowTabulateEnvWeightedCornersBatch): exact where f is bilinear in the window's square
+// coordinates, so there the grid equals the one from the sub-cell centres themselves, env
+// weighting and all (the 13-degree sun weights the sub-cells unevenly). A leaf whose corners all
+// see 0 is 0.
+TEST(EnvProductSampler, CornerLeavesEqualSubCellCentresWhereFIsBilinear) {
+    const SamplerEnvironment env = wideSunEnvironment();
+    const glm::dvec3 axis = env.map().toDirection(0, glm::dvec2(0.3, 0.6));
+    const ProductWindow window = chooseWindow(env.map(), axis, 0.3, 7);
+    ASSERT_FALSE(window.whole());
+    // f(d) bilinear in the window-local coordinates (x, y) of d's square point right of x = 1/2,
+    // where it starts from 0, and 0 left of it: bilinear within every leaf (the corners on
+    // x = 1/2 come back from the direction round trip within 1e-16 of it).
+    auto f = [&](const glm::dvec3& d) {
+        const glm::dvec2 local = (octSquarePoint(env.map(), d) - window.origin()) / window.side();
+        const double right = local.x - 0.5;
+        return right > 1e-12 ? right * (1.0 + 3.0 * local.y) : 0.0;
+    };
+    auto values = [&](const std::vector<glm::dvec3>& d, std::vector<double>& out) {
+        for (size_t i = 0; i < d.size(); ++i)
+            out[i] = f(d[i]);
+    };
+    constexpr int kLevel = 4;
+    const wavelet::SquareGrid centres =
+        windowTabulateEnvWeightedBatch(env, window, kLevel, values, 2);
+    const wavelet::SquareGrid corners =
+        windowTabulateEnvWeightedCornersBatch(env, window, kLevel, values);
+    const int side = 1 << kLevel;
+    int lit = 0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            SCOPED_TRACE(testing::Message() << "leaf " << x << ", " << y);
+            if (x < side / 2) { // every corner at local x <= 1/2 sees 0
+                EXPECT_EQ(corners.at(x, y), 0.0);
+                continue;
+            }
+            ++lit;
+            EXPECT_NEAR(corners.at(x, y), centres.at(x, y), 1e-9 * centres.at(x, y));
+        }
+    EXPECT_EQ(lit, side * side / 2);
+}
+
 } // namespace
 } // namespace wavelit::render
