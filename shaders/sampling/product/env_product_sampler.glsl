@@ -92,7 +92,7 @@ void dsCornerRow(DirSampler s, int l, int gx0, int gy, int side, out float row[k
 // leaf's corners (`corner`: (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)), which neighbouring
 // leaves share: (2^m + 1)^2 BRDF evaluations a product instead of 4^(m + 1), the cache build's
 // main cost (docs/performance.md "Wavelet pass cost, round 7"; the CPU's
-// windowTabulateEnvWeightedCorners). A leaf whose corners all see f cos = 0 is 0 (below the
+// windowTabulateEnvWeightedCornersBatch). A leaf whose corners all see f cos = 0 is 0 (below the
 // horizon: about half of a whole-sphere window's leaves) and skips the env's split. The split
 // comes from the cell's node alone, since the cell's mass cancels in the weighted mean (the env is
 // floored above 0, so the mass is never 0). The cell's node is envFindNode's, found from its
