@@ -235,9 +235,17 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
         std::printf("| %s |", materials[mi].name.c_str());
         double vWavelet = 0, vOracle = 0, vMis = 0, vBsdf = 0;
         std::string timing = materials[mi].name + ":";
+        // Under the EnvMis policy a `wavelet` vertex's NEE is the env technique alone, which the
+        // tracers MIS-weight against the BSDF continuation: `mis`'s estimator, so its row shows
+        // `mis`'s figure, marked (the env technique's own variance would misread as the
+        // sampler's).
+        const bool waveletIsMis =
+            DirectionSampler(*wavelet, SamplerKind::Wavelet, point).envTechniqueOnly();
         for (SamplerKind k : kinds) {
             util::Timer build;
-            const DirectionSampler sampler(*wavelet, k, point);
+            const SamplerKind estimator =
+                k == SamplerKind::Wavelet && waveletIsMis ? SamplerKind::Mis : k;
+            const DirectionSampler sampler(*wavelet, estimator, point);
             const double buildUs = build.seconds() * 1e6;
             util::Timer draw;
             float sink = 0.0f;
@@ -258,7 +266,7 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
                          materials[mi].name.c_str(), samplerKindName(k), momentsTimer.seconds(),
                          integrand.pointCount());
             const double rel = m.variance() / i2;
-            std::printf(" %.3g |", rel);
+            std::printf(" %.3g%s |", rel, estimator != k ? " (mis)" : "");
             if (k == SamplerKind::Wavelet) vWavelet = rel;
             if (k == SamplerKind::Oracle) vOracle = rel;
             if (k == SamplerKind::Mis) vMis = rel;
@@ -276,12 +284,15 @@ void runStudy(const Study& study, const std::vector<SamplerKind>& kinds,
             int slot = 0;
             for (SamplerKind k : {SamplerKind::Wavelet, SamplerKind::Oracle}) {
                 const auto it = gpuMixtures.find(k);
-                if (it != gpuMixtures.end() && mi < it->second.size()) {
+                if (k == SamplerKind::Wavelet && waveletIsMis) {
+                    v[slot] = vMis; // the kernel's EnvMis vertex: `mis`'s estimator, as above
+                } else if (it != gpuMixtures.end() && mi < it->second.size()) {
                     const GpuMixture& mix = it->second[mi];
                     v[slot] = integrand.moments([&](const glm::vec3& w) { return mix.pdf(w); })
                                   .variance() / i2;
                 }
-                std::printf(" %.3g |", v[slot++]);
+                std::printf(" %.3g%s |", v[slot], slot == 0 && waveletIsMis ? " (mis)" : "");
+                ++slot;
             }
             std::printf(" %.2f | %.2f |", v[0] / v[1], vMis / v[0]);
         }
@@ -348,7 +359,8 @@ int main(int argc, char** argv) {
             studies.push_back({std::string(name) + ".exr (512 wide)", *env});
         }
     std::printf("# Sampler variance study\n\nRelative per-sample variance Var/I^2 of g/p (exact, "
-                "dense grid); lower is better.\n");
+                "dense grid); lower is better. \"(mis)\": the material's wavelet vertex is "
+                "EnvMis, mis's estimator.\n");
     std::unique_ptr<vk::Context> gpu;
     if (useGpu) {
         auto ctx = vk::Context::create({"", false});
