@@ -6,9 +6,12 @@
 # tracer's). Lower is better; at equal time the RMSE² of two samplers is in the
 # ratio of their inverse efficiencies.
 #   bash scripts/equal_time.sh SCENE.wlscene... (env: SIZE 128, SPP 32, REF_SPP 2048,
-#        SAMPLERS "bsdf mis wavelet", REF_SAMPLER mis, REF_DEVICE cpu, OUT out/equal_time,
+#        SAMPLERS "bsdf mis wavelet", SEEDS "1 2 3", REF_SAMPLER mis, REF_DEVICE cpu,
+#        OUT out/equal_time,
 #        COMPARE "scene=value ..." adds a column: another renderer's relRMSE² × s per scene)
-# Error: relRMSE of luminance (tests/bench/error_share_bench) against reference A at seeds 1-3,
+# Error: relRMSE of luminance (tests/bench/error_share_bench) against reference A at SEEDS
+# (default "1 2 3"; fireflies move a 3-seed figure of the default scene by +-15%: give more seeds
+# to compare two estimators, docs/performance.md "Wavelet pass cost, round 7"),
 # less the reference's own share, estimated from a second reference B of another seed
 # (E|A−B|² = 2 var_ref). References come from REF_SAMPLER on REF_DEVICE (the CPU tracer computes
 # the same estimator, docs/estimator.md) and are kept in OUT between runs.
@@ -20,6 +23,7 @@ size=${SIZE:-128}
 spp=${SPP:-32}
 refSpp=${REF_SPP:-2048}
 samplers=(${SAMPLERS:-bsdf mis wavelet})
+seeds=(${SEEDS:-1 2 3})
 refSampler=${REF_SAMPLER:-mis}
 refDevice=${REF_DEVICE:-cpu}
 device=${DEVICE:-vulkan} # the device of the timed renders (pass_cpu.py reads DEVICE too)
@@ -54,13 +58,13 @@ for scene in "$@"; do
             python3 scripts/pass_cpu.py - "$scene" "$sampler" "$spp" "$size" | cut -d' ' -f1
         done | sort -g | sed -n 2p)
         sum=0
-        for seed in 1 2 3; do
+        for seed in "${seeds[@]}"; do
             render "$scene" "$out/img.exr" --sampler "$sampler" --spp "$spp" --seed "$seed" \
                 --device "$device"
             sum=$(python3 -c "print($sum + $(rel2 "$out/$name.$size.ref9001.exr" "$out/img.exr"))")
         done
         read -r perSample perPass inv[$sampler] < <(python3 -c "
-s = max($sum / 3 - $refVar, 0.0) * $spp; p = $cpu / $spp / 2
+s = max($sum / ${#seeds[@]} - $refVar, 0.0) * $spp; p = $cpu / $spp / 2
 print(f'{s:.4g} {p:.4f} {s * p:.4g}')")
         other=${compare[$name]:-}
         python3 - "$name" "$sampler" "$perSample" "$perPass" "${inv[$sampler]}" \
