@@ -2,9 +2,10 @@
 // per pixel across passes: the estimator and cache of the Vulkan tracer
 // (shaders/sampling/product_cache.glsl, render/gpu/product_cache.h; docs/estimator.md "Direction
 // samplers", docs/performance.md "The CPU tracer's product cache"). While an image accumulates,
-// camera and scene are fixed, so the mixture (~1k BRDF x cos evaluations and a dense 16^2 product:
-// the kernel's, ProductBuild::Tracer) is built once per pixel, in the first pass after a reset,
-// instead of on every path. Same pixels as the GPU's (product_cache_pixels.h), same mixture, same
+// camera and scene are fixed, so the mixture (~350 BRDF x cos evaluations: the product's 289
+// leaf corners and the share rule's tail; a dense 16^2 product: the kernel's,
+// ProductBuild::Tracer) is built once per pixel, in the first pass after a reset, instead of on
+// every path. Same pixels as the GPU's (product_cache_pixels.h), same mixture, same
 // validity rule at a path's camera vertex: the pixel's entry when its centre hit the SAME
 // material, else `mis`'s technique (the env alone).
 #include "render/reference/cpu_path_tracer.h"
