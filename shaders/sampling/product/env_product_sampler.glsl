@@ -77,13 +77,14 @@ float dsEnvWeightedBrdfCos(DirSampler s, int l, int x, int y, double sub[4]) {
 }
 
 // The wavelet's leaf corners along one row: f cos at the global corner points (gx0 + i, gy) / 2^l,
-// i = 0..side, of the octahedral domain.
+// i = 0..side, of the octahedral domain (row's entries past side are not written).
 const int kCornerRowLength = (1 << WAVELIT_MAX_PRODUCT_LEVEL) + 1;
-void dsCornerRow(DirSampler s, int l, int gx0, int gy, int side, out float row[kCornerRowLength]) {
+void dsCornerRow(DirSampler s, int l, int gx0, int gy, int side,
+                 inout float row[kCornerRowLength]) {
     double cell = 1.0LF / double(1 << l);
-    for (int i = 0; i < kCornerRowLength; ++i) {
+    for (int i = 0; i <= side; ++i) {
         vec3 corner = octToDirection(vec2(dvec2(gx0 + i, gy) * cell));
-        row[i] = i <= side ? dsBrdfCos(s, envToWorld(s.cosSinYaw, corner)) : 0.0;
+        row[i] = dsBrdfCos(s, envToWorld(s.cosSinYaw, corner));
     }
 }
 
@@ -173,14 +174,11 @@ float dsBuildProduct(DirSampler s, SamplerMaterial sm, uint factor) {
         for (int bx = 0; bx < side; bx += 2) {
             int parent = -1, parentReached = 0, parentFirstChild = -1;
             ivec2 parentCell = ivec2(0);
-            // The block's 3 x 3 corners.
-            float k[9] = float[9](rows[0][bx], rows[0][bx + 1], rows[0][bx + 2], rows[1][bx],
-                                  rows[1][bx + 1], rows[1][bx + 2], rows[2][bx], rows[2][bx + 1],
-                                  rows[2][bx + 2]);
             for (int c = 0; c < 4; ++c) {
-                int x = bx + (c & 1), y = by + (c >> 1), at = 3 * (c >> 1) + (c & 1);
+                int x = bx + (c & 1), y = by + (c >> 1), r = c >> 1;
                 float e = max(0.0, gMass[off + y * side + x] * float(side));
-                float corner[4] = float[4](k[at], k[at + 1], k[at + 3], k[at + 4]);
+                float corner[4] = float[4](rows[r][x], rows[r][x + 1], rows[r + 1][x],
+                                           rows[r + 1][x + 1]);
                 gMass[off + y * side + x] =
                     e > 0.0 ? e * dsLeafBrdfCos(l, gx0 + x, gy0 + y, corner, parent, parentCell,
                                                 parentReached, parentFirstChild)
