@@ -10,6 +10,10 @@
 // stall 5-8 ms (longest gap with waits for a CPU 12-148 ms, other processes' load); quitting or
 // shutdown() during a wavelet pass 26-52 ms. Before issue 19: tone mapping on the UI thread
 // 24-88 ms a frame, quitting during a pass 78 s (the whole pass).
+// 2026-12-05, three busy loops beside the test (load ~3.5): shutdown() during a `wavelet` pass
+// took 205-1362 ms (3 of 4 runs over the bound) while the first pass laid out its product cache
+// in one uninterruptible step (0.34 s alone, over a second under load); with the layout's centre
+// rays traced in bands between interrupt checks, quit 20-68 ms and shutdown() 25-62 ms.
 #include "app/editor_options.h"
 #include "app/error_reporter.h"
 #include "app/main_window.h"

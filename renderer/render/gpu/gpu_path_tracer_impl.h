@@ -64,6 +64,10 @@ struct PassPush {
 std::vector<GpuBufferPlan> sceneBufferPlans(const GpuSceneData& d, const scene::Bvh& bvh,
                                             const GpuSamplerData* samplers);
 
+// The product cache's layout traces its centre rays in bands of whole rows of about this many
+// pixels (~4 ms on 2 cores) and polls the interrupt check between bands.
+inline constexpr int kProductCacheLayoutBandPixels = 16384;
+
 class GpuPathTracer final : public Integrator {
 public:
     static util::Result<std::unique_ptr<Integrator>>
@@ -123,8 +127,10 @@ private:
     // lays it out for the current scene and camera and uploads the layout, so that the next pass
     // builds the entries (gpu_path_tracer_cache.cpp). Called at a pass's first piece while the
     // cache is not ready; resetAccumulation (every scene or camera change) makes it not ready,
-    // except after applyChanges of lights only (the entries do not depend on lights).
-    util::Status prepareProductCache();
+    // except after applyChanges of lights only (the entries do not depend on lights). False:
+    // the interrupt check fired between two bands of the layout's centre rays; the next call
+    // resumes there.
+    util::Result<bool> prepareProductCache();
     // A pass is cut into tiles of kTileGroups x kTileGroups workgroups (16 x 16 pixels), taken
     // in a scattered order (tile i of the order is i * stride mod count) so that every piece
     // samples the whole image: a piece's cost then follows its tile count, whereas runs in
@@ -170,6 +176,12 @@ private:
     std::vector<GpuSamplerMaterial> m_packedSamplerMaterials;
     bool m_productCacheReady = false;  // entries built for the current scene and camera
     bool m_productCacheBuilding = false; // the pass in progress builds them
+    // The layout's centre rays, traced a band of rows at a time between interrupt checks (at
+    // 1600 x 1000 they take ~0.2 s on 2 cores, several times that under load): each pixel's
+    // entry words so far and the rows done; reset with the accumulation.
+    std::vector<uint32_t> m_productCacheEntryWords;
+    int m_productCacheRowsTraced = 0;
+    double m_productCacheLayoutSeconds = 0.0;
     uint64_t m_productCacheBuilds = 0;
     BrdfPluginSet m_brdfPluginsCompiled = 0; // the BRDF twins the kernel carries (create)
     size_t m_groupCount = 0;

@@ -10,9 +10,12 @@
 namespace wavelit::render::gpu_tracer {
 
 util::Status GpuPathTracer::renderPass() {
-    if (m_productCacheCompiled && !m_productCacheReady && m_nextTile == 0) {
-        if (auto status = prepareProductCache(); !status)
-            return status;
+    if (m_productCacheCompiled && !m_productCacheReady && !m_productCacheBuilding) {
+        auto prepared = prepareProductCache();
+        if (!prepared)
+            return prepared.error();
+        if (!prepared.value())
+            return util::okStatus(); // interrupted: the next call resumes the layout
         m_productCacheBuilding = true;
     }
     const PassPush push{util::PathSampler::seedKey(m_options.seed),
@@ -107,6 +110,8 @@ void GpuPathTracer::resetAccumulation() {
     // light-only edit keeps them: applyChanges).
     m_productCacheReady = false;
     m_productCacheBuilding = false;
+    m_productCacheRowsTraced = 0; // a layout in progress is for the old scene or camera
+    m_productCacheLayoutSeconds = 0.0;
     m_passElapsed = 0.0;
     m_timings.passSeconds = 0.0;
 }

@@ -18,6 +18,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace wavelit::render {
@@ -26,13 +27,15 @@ struct GpuProductCacheLayout {
     static constexpr uint32_t kNoEntry = 0xFFFFFFFFu;
     static constexpr uint32_t kHeaderWords = 24;
     static constexpr uint32_t kPyramidAt = kHeaderWords + 1; // an entry's pyramid: odd
-    // [0, pixels): each pixel's entry offset in words (kNoEntry: none), then the entries'
-    // space (zeros: the device writes them).
-    std::vector<uint32_t> words;
-    uint64_t entries = 0;       // pixels with an entry
+    // The buffer's head: [0, pixels) each pixel's entry offset in words (kNoEntry: none), padded
+    // to an even count. Only the head is uploaded: the device writes every entry word it reads
+    // (pcBuild) before the pass's trace reads it, so the entries' space needs no contents.
+    std::vector<uint32_t> offsets;
+    uint64_t words = 0;          // the whole buffer: the head and the entries
+    uint64_t entries = 0;        // pixels with an entry
     uint64_t pyramidEntries = 0; // of which hold a pyramid
-    uint64_t skipped = 0;       // pixels left without one: the buffer would exceed maxBytes
-    uint64_t bytes() const { return uint64_t(words.size()) * 4u; }
+    uint64_t skipped = 0;        // pixels left without one: the buffer would exceed maxBytes
+    uint64_t bytes() const { return words * 4u; }
 };
 
 // The words a per-hit product's pyramid takes in an entry (an odd count).
@@ -40,11 +43,19 @@ uint32_t gpuProductCachePyramidWords();
 // The words of an entry with a pyramid: kPyramidAt + the pyramid (an even count).
 uint32_t gpuProductCachePyramidEntryWords();
 
-// Lays out the cache for the scene's camera at width x height. samplerMaterials: the packed
-// sampler materials (GpuSamplerData::materials, one per GPU material index). maxBytes bounds the
-// buffer (the device's storage-buffer range): when not every entry fits, a hashed subset of the
-// pixels, spread over the whole image, gets one; the others use `mis`'s technique at their camera
-// vertex (still unbiased, only noisier).
+// The words of the entry a centre hit on material index `w` (the BVH's v0.w) takes: 0 (none)
+// unless its policy forms a product. samplerMaterials: the packed sampler materials
+// (GpuSamplerData::materials, one per GPU material index); it must outlive the function.
+std::function<uint32_t(float)> gpuProductCacheEntryWords(
+    const std::vector<GpuSamplerMaterial>& samplerMaterials);
+
+// Lays out the cache from each pixel's entry words (row-major, traceProductCacheRows with
+// gpuProductCacheEntryWords). maxBytes bounds the buffer (the device's storage-buffer range):
+// when not every entry fits, a hashed subset of the pixels, spread over the whole image, gets one;
+// the others use `mis`'s technique at their camera vertex (still unbiased, only noisier).
+GpuProductCacheLayout layoutGpuProductCache(std::vector<uint32_t> entryWords, uint64_t maxBytes);
+
+// The same for the scene's camera at width x height, its centre rays traced at once.
 GpuProductCacheLayout layoutGpuProductCache(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height,
                                             const std::vector<GpuSamplerMaterial>& samplerMaterials,

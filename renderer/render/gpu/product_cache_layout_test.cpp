@@ -43,8 +43,8 @@ TEST(GpuProductCacheLayout, EntriesThatDoNotAllFitAreSpreadOverTheImage) {
         for (int y = quarter * kSize / 4; y < (quarter + 1) * kSize / 4; ++y)
             for (int x = 0; x < kSize; ++x) {
                 const size_t i = size_t(y) * kSize + size_t(x);
-                product += all.words[i] != GpuProductCacheLayout::kNoEntry;
-                given += some.words[i] != GpuProductCacheLayout::kNoEntry;
+                product += all.offsets[i] != GpuProductCacheLayout::kNoEntry;
+                given += some.offsets[i] != GpuProductCacheLayout::kNoEntry;
             }
         if (product < 100) continue; // the sphere's thin top and bottom
         EXPECT_NEAR(double(given) / double(product), whole, 0.1) << "rows quarter " << quarter;
@@ -72,7 +72,8 @@ TEST(GpuProductCacheLayout, EntriesAndPyramidsSitWhereTheU64ReadsNeedThem) {
         const GpuProductCacheLayout layout =
             layoutGpuProductCache(*scene, bvh, kWidth, kHeight, materials, UINT64_MAX);
         ASSERT_GT(layout.entries, 100u);
-        EXPECT_EQ(layout.words.size() % 2, 0u);
+        EXPECT_EQ(layout.offsets.size() % 2, 0u);
+        EXPECT_EQ(layout.words % 2, 0u);
         const uint32_t entryWords = mode == kGpuSamplerProduct
                                         ? gpuProductCachePyramidEntryWords()
                                         : GpuProductCacheLayout::kHeaderWords;
@@ -80,13 +81,13 @@ TEST(GpuProductCacheLayout, EntriesAndPyramidsSitWhereTheU64ReadsNeedThem) {
         EXPECT_EQ(layout.pyramidEntries, mode == kGpuSamplerProduct ? layout.entries : 0u);
         uint32_t expected = kWidth * kHeight + 1; // the first entry, after the pad word
         for (int i = 0; i < kWidth * kHeight; ++i) {
-            const uint32_t at = layout.words[size_t(i)];
+            const uint32_t at = layout.offsets[size_t(i)];
             if (at == GpuProductCacheLayout::kNoEntry) continue;
             ASSERT_EQ(at, expected) << "pixel " << i; // in pixel order, back to back
             ASSERT_EQ(at % 2, 0u) << "pixel " << i;
             expected += entryWords;
         }
-        EXPECT_EQ(size_t(expected), layout.words.size());
+        EXPECT_EQ(uint64_t(expected), layout.words);
         // Each level l >= 1 of a pyramid (at its entry's kPyramidAt) starts at an even word, and
         // a row of its cells has an even count: cells (2x, 2x + 1) share a u64.
         for (int l = 1; l <= kGpuMaxProductLevel; ++l)

@@ -13,29 +13,37 @@ namespace wavelit::render {
 std::vector<uint32_t> productCacheEntrySizes(const scene::Scene& scene, const scene::Bvh& bvh,
                                              int width, int height,
                                              const std::function<uint32_t(float)>& entrySize) {
-    const size_t pixels = size_t(width) * size_t(height);
+    std::vector<uint32_t> sizes(size_t(width) * size_t(height), 0u);
+    traceProductCacheRows(scene, bvh, width, height, 0, height, entrySize, sizes);
+    return sizes;
+}
+
+void traceProductCacheRows(const scene::Scene& scene, const scene::Bvh& bvh, int width, int height,
+                           int firstRow, int endRow,
+                           const std::function<uint32_t(float)>& entrySize,
+                           std::vector<uint32_t>& sizes) {
     const CpuCamera camera(scene.camera, width, height);
-    std::vector<uint32_t> sizes(pixels, 0u);
-    auto trace = [&](int firstRow, int rowStep) {
-        for (int y = firstRow; y < height; y += rowStep)
+    endRow = std::min(endRow, height);
+    auto trace = [&](int rowOffset, int rowStep) {
+        for (int y = firstRow + rowOffset; y < endRow; y += rowStep)
             for (int x = 0; x < width; ++x) {
                 scene::BvhHit hit;
+                uint32_t size = 0u;
                 // The pixel centre, as both caches build their entries (jitter 0.5, 0.5).
-                if (!scene::intersect(bvh, camera.origin(), camera.direction(x, y, 0.5f, 0.5f),
-                                      0.0f, std::numeric_limits<float>::max(), hit))
-                    continue;
-                sizes[size_t(y) * size_t(width) + size_t(x)] =
-                    entrySize(bvh.triangles[hit.triangle].v0[3]);
+                if (scene::intersect(bvh, camera.origin(), camera.direction(x, y, 0.5f, 0.5f),
+                                     0.0f, std::numeric_limits<float>::max(), hit))
+                    size = entrySize(bvh.triangles[hit.triangle].v0[3]);
+                sizes[size_t(y) * size_t(width) + size_t(x)] = size;
             }
     };
-    const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    const int threads =
+        std::min(int(std::clamp(std::thread::hardware_concurrency(), 1u, 16u)), endRow - firstRow);
     std::vector<std::thread> workers;
     for (int t = 1; t < threads; ++t)
         workers.emplace_back(trace, t, threads);
-    trace(0, threads);
+    trace(0, std::max(threads, 1));
     for (std::thread& w : workers)
         w.join();
-    return sizes;
 }
 
 uint64_t fitProductCacheEntries(std::vector<uint32_t>& sizes, uint64_t fixedUnits,
