@@ -1,5 +1,6 @@
 #include "viewport/render_controller.h"
 
+#include "viewport/finishing_threads.h"
 #include "viewport/relight_worker.h"
 #include "viewport/render_worker.h"
 
@@ -9,25 +10,27 @@ RenderController::RenderController(RenderSettings settings, QObject* parent)
     : QObject(parent), m_settings(settings), m_shared(std::make_shared<RenderShared>()) {
     qRegisterMetaType<RenderFrame>();
     qRegisterMetaType<RenderJob>();
-    m_thread.setObjectName("wavelit-render");
+    m_thread = std::make_unique<QThread>();
+    m_thread->setObjectName("wavelit-render");
     m_worker = new RenderWorker(m_shared);
-    m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    m_worker->moveToThread(m_thread.get());
+    connect(m_thread.get(), &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &RenderWorker::frameReady, this, &RenderController::onFrame,
             Qt::QueuedConnection);
     connect(m_worker, &RenderWorker::failed, this, &RenderController::onFailed,
             Qt::QueuedConnection);
-    m_thread.start();
+    m_thread->start();
     if (m_settings.relightPreview) {
-        m_relightThread.setObjectName("wavelit-relight");
+        m_relightThread = std::make_unique<QThread>();
+        m_relightThread->setObjectName("wavelit-relight");
         m_relight = new RelightWorker(m_shared);
-        m_relight->moveToThread(&m_relightThread);
-        connect(&m_relightThread, &QThread::finished, m_relight, &QObject::deleteLater);
+        m_relight->moveToThread(m_relightThread.get());
+        connect(m_relightThread.get(), &QThread::finished, m_relight, &QObject::deleteLater);
         connect(m_relight, &RelightWorker::frameReady, this, &RenderController::onRelightFrame,
                 Qt::QueuedConnection);
         connect(m_relight, &RelightWorker::skipped, this, [this] { m_relightFollows = false; },
                 Qt::QueuedConnection);
-        m_relightThread.start();
+        m_relightThread->start();
     }
 }
 
@@ -36,11 +39,16 @@ RenderController::~RenderController() { shutdown(); }
 void RenderController::shutdown() {
     cancel();
     // The worker's step returns at the next piece boundary; the loop then quits and `finished`
-    // deletes the worker (and with it the session and its device) on the render thread.
-    m_thread.quit();
-    m_thread.wait();
-    m_relightThread.quit(); // waits for a preview build or edit in progress (not interruptible)
-    m_relightThread.wait();
+    // deletes the worker (and with it the session and its device) on the render thread. The
+    // workers go with their threads, so they are not reached from here any more.
+    m_worker = nullptr;
+    m_relight = nullptr;
+    for (std::unique_ptr<QThread>* thread : {&m_thread, &m_relightThread})
+        if (*thread) (*thread)->quit();
+    // Both were told to quit first, and share one deadline.
+    const QDeadlineTimer deadline(kJoinMs);
+    for (std::unique_ptr<QThread>* thread : {&m_thread, &m_relightThread})
+        joinOrLetFinish(std::move(*thread), deadline);
 }
 
 void RenderController::render(std::shared_ptr<const scene::Scene> scene, const QString& scenePath) {
@@ -84,6 +92,7 @@ void RenderController::submit(RenderJob job) {
         QMetaObject::invokeMethod(m_relight, [worker = m_relight, job]() mutable { worker->submit(std::move(job)); },
                                   Qt::QueuedConnection);
     // Counted before it is queued: the running pass stops at its next piece to take it.
+    if (!m_worker) return;
     m_shared->pendingRequests.fetch_add(1);
     QMetaObject::invokeMethod(
         m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->submit(std::move(job)); },
@@ -93,7 +102,7 @@ void RenderController::submit(RenderJob job) {
 void RenderController::cancel() { m_shared->cancel.store(true); }
 
 void RenderController::setExposure(float ev) {
-    if (ev == m_exposureEv || m_shared->cancel.load()) return;
+    if (ev == m_exposureEv || m_shared->cancel.load() || !m_worker) return;
     m_exposureEv = ev;
     m_shared->exposureEv.store(ev);
     // One queued retoneMap at a time: it reads the newest exposure when it runs.
@@ -104,7 +113,7 @@ void RenderController::setExposure(float ev) {
 }
 
 void RenderController::setInteractive(bool active) {
-    if (m_shared->interactive.exchange(active) == active || active) return;
+    if (m_shared->interactive.exchange(active) == active || active || !m_worker) return;
     // The drag ended: a worker that is idle (drafts are done) must wake up for the full session.
     m_shared->pendingRequests.fetch_add(1);
     QMetaObject::invokeMethod(m_worker, [worker = m_worker] { worker->wake(); }, Qt::QueuedConnection);

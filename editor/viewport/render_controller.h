@@ -2,10 +2,12 @@
 // RenderWorker, turns scene snapshots into RenderJobs (render size, device and spp limit from
 // RenderSettings) and forwards only frames and errors of the newest job. Frames arrive tone-mapped
 // (RenderFrame::display, made on the render thread); setExposure re-maps there too. The UI thread
-// never blocks on the render thread, except in shutdown() (also run by the destructor), which
-// stops the running pass within one piece (~40 ms, gpu_path_tracer.h) and joins, so the Vulkan
-// device is still destroyed on the thread that created it (lavapipe and the validation layers do
-// not require that, but a device's objects are created and used only there: one thread, no locks).
+// never blocks on the render thread, except briefly in shutdown() (also run by the destructor),
+// which stops the running pass within one piece (~40 ms, gpu_path_tracer.h) and joins; a thread
+// inside a step no interrupt reaches is let go to finish on its own (finishing_threads.h). The
+// Vulkan device is destroyed on the thread that created it either way (lavapipe and the
+// validation layers do not require that, but a device's objects are created and used only there:
+// one thread, no locks).
 //
 // What the viewport shows (displayFrame, docs/relighting.md §6): a second thread runs the
 // relighting preview (relight_worker.h) on the same jobs. Of the frames both threads deliver the
@@ -37,6 +39,8 @@ class RenderWorker;
 struct RenderShared;
 
 inline constexpr double kPreviewRelError = 0.2;
+// How long shutdown() waits for its threads before it lets them finish on their own.
+inline constexpr int kJoinMs = 200;
 
 struct RenderSettings {
     render::DeviceChoice device = render::DeviceChoice::Auto;
@@ -65,11 +69,12 @@ public:
     // Stops rendering for good and joins the render thread: the running pass stops at its next
     // piece boundary (the Vulkan tracer polls every ~40 ms), then the session, its Vulkan device
     // and the worker are destroyed on the render thread. Returns within 0.5 s while a pass is
-    // running (measured: editor_render_thread_test). Not bounded: a session being created or a
-    // scene being swapped in (pipeline compile, sampler-table builds: up to ~3 s with `wavelet`
-    // after an environment edit) finishes that step first. Afterwards render() and
-    // setExposure() do nothing and no frame or error is delivered. Idempotent; for the quit
-    // path (e.g. after a "Save changes?" prompt), before the window goes.
+    // running (measured: editor_render_thread_test). A thread still busy after kJoinMs (a
+    // session being created or a scene being swapped in: pipeline compile, sampler-table builds,
+    // 2-7 s with `wavelet`; a relighting preview being built) is let go: it finishes that step,
+    // sees the cancel and ends on its own (finishing_threads.h). Afterwards render(),
+    // setExposure() and setInteractive() do nothing and no frame or error is delivered.
+    // Idempotent; for the quit path (e.g. after a "Save changes?" prompt), before the window goes.
     void shutdown();
 
     // Restarts rendering with this scene (a new generation). A null scene stops rendering.
@@ -119,8 +124,8 @@ private:
     // then never replaces it, so a light drag shows the preview, not the two alternating.
     bool m_relightFollows = false;
     void display(RenderFrame frame);
-    QThread m_relightThread;
-    RelightWorker* m_relight = nullptr;
+    std::unique_ptr<QThread> m_relightThread; // null after shutdown()
+    RelightWorker* m_relight = nullptr;        // null after shutdown()
     RenderFrame m_displayed;
     RenderFrame m_latestPreview;
     quint64 m_sceneGeneration = 0; // the job that opened the current scene
@@ -133,8 +138,9 @@ private:
 
     RenderSettings m_settings;
     std::shared_ptr<RenderShared> m_shared;
-    QThread m_thread;
-    RenderWorker* m_worker = nullptr; // lives on m_thread, deleted there when it finishes
+    std::unique_ptr<QThread> m_thread; // null after shutdown()
+    // Lives on m_thread, deleted there when it finishes; null after shutdown().
+    RenderWorker* m_worker = nullptr;
     RenderFrame m_latest;
     quint64 m_generation = 0;
     float m_exposureEv = 0.0f;

@@ -91,7 +91,7 @@ void RenderWorker::step() {
         fail(toQString(status.error()));
         return;
     }
-    if (!m_full.session) return;
+    if (!m_full.session || m_shared->cancel.load()) return; // cancelled while it was created
     if (m_maxSpp > 0 && m_full.session->samplesPerPixel() >= m_maxSpp) return; // idle until a new job
 
     const int before = m_full.session->samplesPerPixel();
