@@ -1,5 +1,7 @@
 #include "lightmix/compare_side_render.h"
 
+#include "viewport/finishing_threads.h"
+
 #include "render/session/render_session.h"
 #include "scene/scene_io.h"
 
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 
 namespace wavelit::editor {
 namespace {
@@ -30,9 +33,11 @@ CompareSideRender::CompareSideRender(QObject* parent) : QObject(parent) {}
 
 CompareSideRender::~CompareSideRender() {
     stop();
+    // Each ends within one piece of a pass; one still creating its session is let go.
+    const QDeadlineTimer deadline(kJoinMs);
     for (QThread* thread : m_threads) {
-        thread->wait(); // within one piece of a pass, or a session creation
-        delete thread;
+        disconnect(thread, nullptr, this, nullptr); // its finished handler would delete it
+        joinOrLetFinish(std::unique_ptr<QThread>(thread), deadline);
     }
 }
 

@@ -9,7 +9,8 @@
 // stall the UI thread. Frames (the mean radiance so far) come back as queued signals, the first
 // pass at once and then at most every kFrameIntervalMs. stop() (and the destructor) cancel the
 // render; the running pass stops at its next piece (~40 ms on the Vulkan tracer) and the thread
-// ends by itself: stop() does not wait, the destructor does (the editor is closing).
+// ends by itself: stop() does not wait, the destructor does (the editor is closing), for at most
+// kJoinMs; a thread still creating its session then is let go (viewport/finishing_threads.h).
 #pragma once
 
 #include "render/session/render_options.h"
@@ -39,7 +40,7 @@ public:
     static constexpr int kFrameIntervalMs = 100;
 
     explicit CompareSideRender(QObject* parent = nullptr);
-    ~CompareSideRender() override; // cancels and joins every render still running
+    ~CompareSideRender() override; // cancels, joins or lets go every render still running
 
     // Renders `scene` with `options` (lightGroups off) until stop(), or until `maxSpp` samples
     // per pixel when positive. A running render is stopped first. Assets an edit dropped (a new

@@ -1,6 +1,6 @@
-// Threads a RenderController let go while they finished a step no interrupt reaches: a render
-// session's creation (lavapipe's pipeline compile and the sampler tables: 2-7 s for `wavelet`
-// on 2 cores) or a relighting preview's build. Their cancel flag is set, so they stop at the end
+// Threads a RenderController or a LightMix side render let go while they finished a step no
+// interrupt reaches: a render session's creation (lavapipe's pipeline compile and the sampler
+// tables: 2-7 s for `wavelet` on 2 cores) or a relighting preview's build. Their cancel flag is set, so they stop at the end
 // of that step; the UI thread does not wait for them (closing a window right after opening a
 // scene used to freeze the editor for those seconds). Each is deleted once it has finished, on
 // the UI thread, or, at the latest, when the application object goes (a post routine joins what
@@ -13,6 +13,9 @@
 #include <memory>
 
 namespace wavelit::editor {
+
+// How long an owner waits for its threads before it lets them finish on their own.
+inline constexpr int kJoinMs = 200;
 
 // Waits until `deadline` for `thread` (already told to quit) to finish; if it has not, keeps it
 // until it does. Call on the UI thread, with a QCoreApplication.

@@ -39,8 +39,6 @@ class RenderWorker;
 struct RenderShared;
 
 inline constexpr double kPreviewRelError = 0.2;
-// How long shutdown() waits for its threads before it lets them finish on their own.
-inline constexpr int kJoinMs = 200;
 
 struct RenderSettings {
     render::DeviceChoice device = render::DeviceChoice::Auto;
