@@ -92,7 +92,6 @@ void RenderController::submit(RenderJob job) {
         QMetaObject::invokeMethod(m_relight, [worker = m_relight, job]() mutable { worker->submit(std::move(job)); },
                                   Qt::QueuedConnection);
     // Counted before it is queued: the running pass stops at its next piece to take it.
-    if (!m_worker) return;
     m_shared->pendingRequests.fetch_add(1);
     QMetaObject::invokeMethod(
         m_worker, [worker = m_worker, job = std::move(job)]() mutable { worker->submit(std::move(job)); },
@@ -102,7 +101,7 @@ void RenderController::submit(RenderJob job) {
 void RenderController::cancel() { m_shared->cancel.store(true); }
 
 void RenderController::setExposure(float ev) {
-    if (ev == m_exposureEv || m_shared->cancel.load() || !m_worker) return;
+    if (ev == m_exposureEv || m_shared->cancel.load()) return;
     m_exposureEv = ev;
     m_shared->exposureEv.store(ev);
     // One queued retoneMap at a time: it reads the newest exposure when it runs.
@@ -113,6 +112,7 @@ void RenderController::setExposure(float ev) {
 }
 
 void RenderController::setInteractive(bool active) {
+    // The only call that does not stop at the cancel flag: after shutdown() no worker is left.
     if (m_shared->interactive.exchange(active) == active || active || !m_worker) return;
     // The drag ended: a worker that is idle (drafts are done) must wake up for the full session.
     m_shared->pendingRequests.fetch_add(1);
