@@ -18,6 +18,7 @@ util::Result<bool> GpuPathTracer::prepareProductCache() {
     if (m_productCacheRowsTraced == 0)
         m_productCacheEntryWords.assign(size_t(width) * size_t(height), 0u);
     const int bandRows = std::max(1, kProductCacheLayoutBandPixels / std::max(width, 1));
+    const auto entryWords = gpuProductCacheEntryWords(m_packedSamplerMaterials);
     while (m_productCacheRowsTraced < height) {
         if (m_interrupt && m_interrupt()) {
             m_productCacheLayoutSeconds += timer.seconds();
@@ -25,8 +26,7 @@ util::Result<bool> GpuPathTracer::prepareProductCache() {
         }
         const int end = std::min(height, m_productCacheRowsTraced + bandRows);
         traceProductCacheRows(*m_scene, *m_bvh, width, height, m_productCacheRowsTraced, end,
-                              gpuProductCacheEntryWords(m_packedSamplerMaterials),
-                              m_productCacheEntryWords);
+                              entryWords, m_productCacheEntryWords);
         m_productCacheRowsTraced = end;
     }
     const uint64_t range = m_context->limits().maxStorageBufferRange;
