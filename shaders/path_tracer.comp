@@ -66,6 +66,17 @@ struct Material {
 #include "common/packed64.glsl"
 layout(std430, binding = 1) readonly buffer Nodes { BvhNode64 bvhNodes64[]; };
 layout(std430, binding = 2) readonly buffer Triangles { BvhTriangle64 bvhTriangles64[]; };
+// The same buffers as texels (the driver's choice on CPU devices, gpu_path_tracer.cpp; the
+// order is gpu_path_tracer_impl.h's TexelView): lavapipe reads a texel through its texture path,
+// a gather in registers, where an SSBO read is a loop over the lanes with a bounds check and a
+// stack round trip each (docs/performance.md "Texel buffers").
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING) uniform usamplerBuffer bvhNodeTexels;
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 1) uniform usamplerBuffer bvhTriangleTexels;
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 2) uniform usamplerBuffer materialTexels;
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 3) uniform usamplerBuffer lightTexels;
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 4) uniform samplerBuffer envTexelView;
+#endif
 layout(std430, binding = 3) readonly buffer Materials { Material64 materials64[]; };
 layout(std430, binding = 4) readonly buffer Environment { float envTexels[]; };
 layout(std430, binding = 5) buffer Accumulation { u64vec2 accumulation[]; }; // vec4 sums
@@ -82,6 +93,11 @@ layout(std430, binding = 8) readonly buffer SamplerMaterials { SamplerMaterial s
 layout(std430, binding = 9) readonly buffer SamplerWords { uint samplerWords[]; };
 // The same buffer as 64-bit words: doubles and aligned word pairs in one load (env_exact.glsl).
 layout(std430, binding = 9) readonly buffer SamplerWords64 { uint64_t samplerWords64[]; };
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+#define WAVELIT_SAMPLER_TEXELS 1 // sampling/sampler_words.glsl
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 5) uniform usamplerBuffer samplerWordTexels;
+layout(binding = WAVELIT_SCENE_TEXELS_BINDING + 6) uniform usamplerBuffer samplerPairTexels;
+#endif
 #ifdef WAVELIT_PRODUCT_CACHE_BINDING
 // `wavelet` with a product: the camera vertex's mixture per pixel (sampling/product_cache.glsl).
 layout(std430, binding = WAVELIT_PRODUCT_CACHE_BINDING) buffer ProductCache { uint productCache[]; };

@@ -9,8 +9,12 @@
 namespace wavelit::vk {
 namespace {
 VkDescriptorType descriptorType(BindingKind kind) {
-    return kind == BindingKind::StorageBuffer ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
-                                              : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    switch (kind) {
+    case BindingKind::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case BindingKind::UniformBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case BindingKind::UniformTexelBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    }
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 } // namespace
 
@@ -33,8 +37,10 @@ util::Result<ComputeKernel> ComputeKernel::create(const Context& ctx,
     k.m_module = ShaderModuleHandle(dev, module);
     ctx.setName(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module), desc.name);
 
+    k.m_views.resize(desc.bindings.size());
+    k.m_maxTexels = ctx.limits().maxTexelBufferElements;
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    uint32_t storageCount = 0, uniformCount = 0;
+    uint32_t counts[3] = {0, 0, 0}; // per BindingKind
     for (uint32_t i = 0; i < desc.bindings.size(); ++i) {
         VkDescriptorSetLayoutBinding b{};
         b.binding = i;
@@ -42,7 +48,7 @@ util::Result<ComputeKernel> ComputeKernel::create(const Context& ctx,
         b.descriptorCount = 1;
         b.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
         bindings.push_back(b);
-        (desc.bindings[i] == BindingKind::StorageBuffer ? storageCount : uniformCount) += 1;
+        counts[size_t(desc.bindings[i])] += 1;
     }
     VkDescriptorSetLayoutCreateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
@@ -82,10 +88,10 @@ util::Result<ComputeKernel> ComputeKernel::create(const Context& ctx,
     ctx.setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline), desc.name);
 
     std::vector<VkDescriptorPoolSize> sizes;
-    if (storageCount)
-        sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storageCount});
-    if (uniformCount)
-        sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniformCount});
+    for (BindingKind kind : {BindingKind::StorageBuffer, BindingKind::UniformBuffer,
+                             BindingKind::UniformTexelBuffer})
+        if (counts[size_t(kind)])
+            sizes.push_back({descriptorType(kind), counts[size_t(kind)]});
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     poolInfo.maxSets = 1;
@@ -110,7 +116,8 @@ util::Result<ComputeKernel> ComputeKernel::create(const Context& ctx,
 }
 
 void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
-    WAVELIT_CHECK(binding < m_bindings.size());
+    WAVELIT_CHECK(binding < m_bindings.size() &&
+                  m_bindings[binding] != BindingKind::UniformTexelBuffer);
     VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet write{};
     write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -120,6 +127,51 @@ void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     write.descriptorType = descriptorType(m_bindings[binding]);
     write.pBufferInfo = &info;
     vkUpdateDescriptorSets(m_device, 1, &write, 0, nullptr);
+}
+
+uint32_t ComputeKernel::texelBytes(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_R32_UINT:
+    case VK_FORMAT_R32_SFLOAT: return 4;
+    case VK_FORMAT_R32G32_UINT:
+    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_UINT:
+    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+    default: return 0;
+    }
+}
+
+util::Status ComputeKernel::bindTexels(uint32_t binding, const Buffer& buffer, VkFormat format) {
+    const uint32_t bytes = texelBytes(format);
+    WAVELIT_CHECK(binding < m_bindings.size() &&
+                  m_bindings[binding] == BindingKind::UniformTexelBuffer && bytes > 0 &&
+                  buffer.size() % bytes == 0);
+    if (buffer.size() / bytes > m_maxTexels)
+        return util::makeError(util::ErrorKind::Unsupported, "",
+                               "a buffer of " + std::to_string(buffer.size()) + " bytes is " +
+                                   std::to_string(buffer.size() / bytes) +
+                                   " texels, more than the device's limit of " +
+                                   std::to_string(m_maxTexels));
+    VkBufferViewCreateInfo viewInfo{};
+    viewInfo.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
+    viewInfo.buffer = buffer.handle();
+    viewInfo.format = format;
+    viewInfo.offset = 0;
+    viewInfo.range = VK_WHOLE_SIZE;
+    VkBufferView view = VK_NULL_HANDLE;
+    WAVELIT_VK_TRY(vkCreateBufferView(m_device, &viewInfo, nullptr, &view),
+                   "vkCreateBufferView(binding " + std::to_string(binding) + ")");
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstSet = m_set;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    write.pTexelBufferView = &view;
+    vkUpdateDescriptorSets(m_device, 1, &write, 0, nullptr);
+    // The previous view goes only now that the set no longer names it.
+    m_views[binding] = BufferViewHandle(m_device, view);
+    return util::okStatus();
 }
 
 void ComputeKernel::bind(VkCommandBuffer cmd, const void* pushConstants) const {

@@ -17,7 +17,10 @@ namespace wavelit::vk {
 class Buffer;
 class Context;
 
-enum class BindingKind { StorageBuffer, UniformBuffer };
+// UniformTexelBuffer: the buffer seen as texels (a `samplerBuffer` read with texelFetch; the
+// buffer needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). lavapipe reads texels through its texture path, a gather in registers,
+// where an SSBO read is a loop over the lanes (docs/performance.md "Texel buffers").
+enum class BindingKind { StorageBuffer, UniformBuffer, UniformTexelBuffer };
 
 // A rectangle of workgroups [baseX, baseX + groupsX) x [baseY, baseY + groupsY) (z: one layer).
 struct DispatchRegion {
@@ -40,6 +43,13 @@ public:
 
     // Points binding i at the whole buffer. Must not be called while a dispatch is in flight.
     void bind(uint32_t binding, const Buffer& buffer);
+    // Points texel binding i at a view of the whole buffer as `format` texels (R32, RG32 or
+    // RGBA32, UINT or SFLOAT; made here, kept until the next call for i). The buffer's size is a
+    // multiple of the texel's; more texels than the device's maxTexelBufferElements is an
+    // Unsupported error. Same rule.
+    util::Status bindTexels(uint32_t binding, const Buffer& buffer, VkFormat format);
+    // Bytes of a texel of `format`, for the formats bindTexels takes (else 0).
+    static uint32_t texelBytes(VkFormat format);
     // Records bind + push constants + dispatch into cmd.
     void dispatch(VkCommandBuffer cmd, uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ,
                   const void* pushConstants = nullptr) const;
@@ -57,6 +67,8 @@ private:
     // Declaration order = reverse destruction order: pipeline and layouts go before the pool.
     VkDevice m_device = VK_NULL_HANDLE;
     std::vector<BindingKind> m_bindings;
+    std::vector<BufferViewHandle> m_views; // per binding; only texel bindings hold one
+    uint64_t m_maxTexels = 0;              // the device's maxTexelBufferElements
     uint32_t m_pushBytes = 0;
     DescriptorPoolHandle m_pool;
     DescriptorSetLayoutHandle m_setLayout;

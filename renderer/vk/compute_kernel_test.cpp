@@ -120,5 +120,74 @@ TEST(VkComputeKernel, SaxpyRoundTripHasNoValidationMessages) {
     EXPECT_EQ(ctx->validationMessageCount(), 0);
 }
 
+// One buffer of words read through three texel views (R32UI, RG32UI, RGBA32UI) gives back the
+// same words; binding a second buffer replaces the views (the first view's buffer is then
+// destroyed while the kernel lives: its view must be gone with the rebind).
+const char* kTexelCopy = R"(#version 460
+layout(local_size_x = 64) in;
+layout(binding = 0) uniform usamplerBuffer words;
+layout(binding = 1) uniform usamplerBuffer pairs;
+layout(binding = 2) uniform usamplerBuffer quads;
+layout(std430, binding = 3) buffer Out { uint outs[]; };
+layout(push_constant) uniform Push { uint n; } pc;
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pc.n) return;
+    outs[3u * i] = texelFetch(words, int(i)).x;
+    outs[3u * i + 1u] = texelFetch(pairs, int(i / 2u))[i % 2u];
+    outs[3u * i + 2u] = texelFetch(quads, int(i / 4u))[i % 4u];
+}
+)";
+
+TEST(VkComputeKernel, TexelViewsReadTheBufferWordsAndFollowARebind) {
+    auto ctx = makeContext();
+    ASSERT_TRUE(ctx);
+    constexpr uint32_t n = 1024;
+    {
+        auto spirv = compileComputeShader(kTexelCopy, "texel_copy.comp", {});
+        ASSERT_TRUE(spirv.ok()) << spirv.error().message();
+        constexpr VkBufferUsageFlags kTexels =
+            VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        auto out = Buffer::create(*ctx, 3 * n * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "out");
+        ASSERT_TRUE(out.ok());
+        auto kernel = ComputeKernel::create(
+            *ctx, {"texel_copy", *spirv,
+                   {BindingKind::UniformTexelBuffer, BindingKind::UniformTexelBuffer,
+                    BindingKind::UniformTexelBuffer, BindingKind::StorageBuffer},
+                   4});
+        ASSERT_TRUE(kernel.ok()) << kernel.error().message();
+        kernel->bind(3, *out);
+        auto runner = CommandRunner::create(*ctx, "texel copy");
+        ASSERT_TRUE(runner.ok()) << runner.error().message();
+        for (uint32_t round = 0; round < 2; ++round) {
+            std::vector<uint32_t> words(n);
+            for (uint32_t i = 0; i < n; ++i)
+                words[i] = 0x9E3779B9u * (i + 1u) ^ (round << 31);
+            auto in = Buffer::create(*ctx, n * 4, kTexels, "in");
+            ASSERT_TRUE(in.ok());
+            in->write(words.data(), n * 4);
+            ASSERT_TRUE(kernel->bindTexels(0, *in, VK_FORMAT_R32_UINT).ok());
+            ASSERT_TRUE(kernel->bindTexels(1, *in, VK_FORMAT_R32G32_UINT).ok());
+            ASSERT_TRUE(kernel->bindTexels(2, *in, VK_FORMAT_R32G32B32A32_UINT).ok());
+            uint32_t push = n;
+            auto status = (*runner)->run([&](VkCommandBuffer cmd) {
+                kernel->dispatch(cmd, n / 64, 1, 1, &push);
+                computeToComputeAndHostBarrier(cmd);
+            });
+            ASSERT_TRUE(status.ok()) << status.error().message();
+            std::vector<uint32_t> got(3 * n);
+            out->read(got.data(), got.size() * 4);
+            for (uint32_t i = 0; i < n; ++i)
+                for (uint32_t view = 0; view < 3; ++view)
+                    ASSERT_EQ(got[3 * i + view], words[i]) << "round " << round << " view " << view;
+            // `in` goes here, before the next round binds its successor.
+        }
+    }
+    EXPECT_EQ(ComputeKernel::texelBytes(VK_FORMAT_R32_SFLOAT), 4u);
+    EXPECT_EQ(ComputeKernel::texelBytes(VK_FORMAT_R32G32B32A32_UINT), 16u);
+    EXPECT_EQ(ComputeKernel::texelBytes(VK_FORMAT_R8_UNORM), 0u);
+    EXPECT_EQ(ctx->validationMessageCount(), 0);
+}
+
 } // namespace
 } // namespace wavelit::vk

@@ -71,6 +71,9 @@ inline void destroyCommandPool(VkDevice d, VkCommandPool h, const VkAllocationCa
 inline void destroyFence(VkDevice d, VkFence h, const VkAllocationCallbacks* a) {
     vkDestroyFence(d, h, a);
 }
+inline void destroyBufferView(VkDevice d, VkBufferView h, const VkAllocationCallbacks* a) {
+    vkDestroyBufferView(d, h, a);
+}
 
 using BufferHandle = DeviceHandle<VkBuffer, destroyBuffer>;
 using MemoryHandle = DeviceHandle<VkDeviceMemory, freeMemory>;
@@ -81,5 +84,6 @@ using PipelineLayoutHandle = DeviceHandle<VkPipelineLayout, destroyPipelineLayou
 using PipelineHandle = DeviceHandle<VkPipeline, destroyPipeline>;
 using CommandPoolHandle = DeviceHandle<VkCommandPool, destroyCommandPool>;
 using FenceHandle = DeviceHandle<VkFence, destroyFence>;
+using BufferViewHandle = DeviceHandle<VkBufferView, destroyBufferView>;
 
 } // namespace wavelit::vk

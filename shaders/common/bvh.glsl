@@ -13,11 +13,20 @@
 // The box test of `node`, read as one u64vec4 (common/packed64.glsl); info = (leftFirst, count)
 // from the same load, so a node the traversal descends into is not read again.
 float bvhHitBox(uint node, vec3 o, vec3 invDir, float tMin, float tMax, out uvec2 info) {
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+    // A node is two RGBA32UI texels: (min, leftFirst), (max, count).
+    uvec4 lo = texelFetch(bvhNodeTexels, int(2u * node));
+    uvec4 hi = texelFetch(bvhNodeTexels, int(2u * node + 1u));
+    info = uvec2(lo.w, hi.w);
+    vec3 t0 = (uintBitsToFloat(lo.xyz) - o) * invDir;
+    vec3 t1 = (uintBitsToFloat(hi.xyz) - o) * invDir;
+#else
     u64vec4 q = bvhNodes64[node].q;
     vec2 minZ = words2(q.y), maxZ = words2(q.w);
     info = uvec2(highWord(q.y), highWord(q.w));
     vec3 t0 = (vec3(words2(q.x), minZ.x) - o) * invDir;
     vec3 t1 = (vec3(words2(q.z), maxZ.x) - o) * invDir;
+#endif
     vec3 tn = min(t0, t1), tf = max(t0, t1);
     float enter = max(max(tn.x, tn.y), max(tn.z, tMin));
     float exit = min(min(tf.x, tf.y), min(tf.z, tMax));
@@ -26,11 +35,18 @@ float bvhHitBox(uint node, vec3 o, vec3 invDir, float tMin, float tMax, out uvec
 
 bool bvhHitTriangle(uint i, vec3 o, vec3 d, float tMin, float tMax, out float t, out float b1,
                     out float b2) {
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+    // A triangle is six texels (v0, v1, v2, n0, n1, n2); the test reads the first three.
+    vec3 v0 = uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i)).xyz);
+    vec3 e1 = uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 1u)).xyz) - v0;
+    vec3 e2 = uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 2u)).xyz) - v0;
+#else
     // Three 64-bit pairs (6 loads a lane) instead of three vec3s (9).
     u64vec2 w0 = bvhTriangles64[i].v0, w1 = bvhTriangles64[i].v1, w2 = bvhTriangles64[i].v2;
     vec3 v0 = vec3(words2(w0.x), words2(w0.y).x);
     vec3 e1 = vec3(words2(w1.x), words2(w1.y).x) - v0;
     vec3 e2 = vec3(words2(w2.x), words2(w2.y).x) - v0;
+#endif
     vec3 p = cross(d, e2);
     float det = dot(e1, p);
     t = 0.0;
@@ -117,8 +133,13 @@ bool bvhTrace(vec3 o, vec3 d, float tMin, float tMax, bool anyHit, uint triangle
             }
         }
         if (!popped) return found;
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+        info = uvec2(texelFetch(bvhNodeTexels, int(2u * node)).w,
+                     texelFetch(bvhNodeTexels, int(2u * node + 1u)).w);
+#else
         uint64_t q1 = bvhNodes64[node].q.y, q3 = bvhNodes64[node].q.w;
         info = uvec2(highWord(q1), highWord(q3));
+#endif
     }
     return found;
 }

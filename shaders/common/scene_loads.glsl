@@ -5,17 +5,38 @@
 #define WAVELIT_SCENE_LOADS_GLSL
 
 BvhTriangle loadTriangle(uint i) {
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+    return BvhTriangle(uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i))),
+                       uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 1u))),
+                       uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 2u))),
+                       uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 3u))),
+                       uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 4u))),
+                       uintBitsToFloat(texelFetch(bvhTriangleTexels, int(6u * i + 5u))));
+#endif
     BvhTriangle64 w = bvhTriangles64[i];
     return BvhTriangle(words4(w.v0), words4(w.v1), words4(w.v2), words4(w.n0), words4(w.n1),
                        words4(w.n2));
 }
 
 Material loadMaterial(uint m) {
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+    return Material(uintBitsToFloat(texelFetch(materialTexels, int(2u * m))),
+                    uintBitsToFloat(texelFetch(materialTexels, int(2u * m + 1u))));
+#endif
     Material64 w = materials64[m];
     return Material(words4(w.baseColorRoughness), words4(w.emissionType));
 }
 
 Light loadLight(uint k) {
+#ifdef WAVELIT_SCENE_TEXELS_BINDING
+    uint at = 6u * k;
+    return Light(uintBitsToFloat(texelFetch(lightTexels, int(at))),
+                 uintBitsToFloat(texelFetch(lightTexels, int(at + 1u))),
+                 uintBitsToFloat(texelFetch(lightTexels, int(at + 2u))),
+                 uintBitsToFloat(texelFetch(lightTexels, int(at + 3u))),
+                 uintBitsToFloat(texelFetch(lightTexels, int(at + 4u))),
+                 uintBitsToFloat(texelFetch(lightTexels, int(at + 5u))));
+#endif
     Light64 w = analyticLights64[k];
     return Light(words4(w.positionType), words4(w.normalRadius), words4(w.emissionArea),
                  words4(w.axisUInner), words4(w.axisVOuter), words4(w.sun));

@@ -36,6 +36,7 @@
 #include "common/octahedral.glsl"
 #include "common/sampling.glsl"
 #include "sampling/sampler_environment.glsl"
+#include "sampling/sampler_words.glsl"
 #include "sampling/env_exact.glsl"
 // The product kinds' code (private pyramid, descents) only where the pipeline draws from a
 // product: on lavapipe its mere presence cost the `mis` kernel ~40% of its pass (issue 12).
@@ -87,7 +88,7 @@ double dsTailMoment(DirSampler s, SamplerGlobals g, bool product, vec3 axisLocal
             vec3 d = octToDirection(p);
             if (!product && dot(d, axisLocal) > cosCap) continue;
             float fcos = dsBrdfCos(s, envToWorld(s.cosSinYaw, d));
-            double average = uintBitsToFloat(samplerWords[g.tailOffset + uint(y * side + x)]);
+            double average = uintBitsToFloat(samplerWord(g.tailOffset + uint(y * side + x)));
             sum += average * double(fcos) * double(fcos);
         }
     double dw = double(kFourPi) / double(side * side);

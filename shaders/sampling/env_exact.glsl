@@ -16,11 +16,12 @@
 
 #include "common/constants.glsl"
 #include "common/equirect.glsl"
+#include "sampling/sampler_words.glsl"
 
 // The double at (even) word i.
-double envExactWord(uint i) { return uint64BitsToDouble(samplerWords64[i >> 1u]); }
+double envExactWord(uint i) { return uint64BitsToDouble(samplerPair(i >> 1u)); }
 
-uvec2 envExactSize(uint offset) { return unpackUint2x32(samplerWords64[offset >> 1u]); }
+uvec2 envExactSize(uint offset) { return unpackUint2x32(samplerPair(offset >> 1u)); }
 
 uint envEvenUp(uint n) { return (n + 1u) & ~1u; }
 
@@ -41,8 +42,8 @@ uint envCdfFirstEndingAfter(uint cdf, uint lo, uint hi, double u) {
 // operations.
 uint envCdfPick(uint cdf, uint guide, uint n, inout double u) {
     uint k = min(uint(u * double(n)), n - 1u);
-    uint lo = envCdfFirstEndingAfter(cdf, max(samplerWords[guide + k], 1u) - 1u,
-                                     min(k + 1u < n ? samplerWords[guide + k + 1u] + 1u : n - 1u, n - 1u), u);
+    uint lo = envCdfFirstEndingAfter(cdf, max(samplerWord(guide + k), 1u) - 1u,
+                                     min(k + 1u < n ? samplerWord(guide + k + 1u) + 1u : n - 1u, n - 1u), u);
     double c0 = envExactWord(cdf + 2u * lo), c1 = envExactWord(cdf + 2u * (lo + 1u));
     if (!(c0 <= u && u < c1)) {
         lo = envCdfFirstEndingAfter(cdf, 0u, n - 1u, u);

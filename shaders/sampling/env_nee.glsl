@@ -15,7 +15,7 @@ vec3 envTexelRadiance(uvec2 t) {
     uvec2 size = params.envSize.xy;
     if (size.x == 0u || size.y == 0u) return params.envScale.rgb;
     uint i = 3u * (t.y * size.x + t.x);
-    return vec3(envTexels[i], envTexels[i + 1u], envTexels[i + 2u]) * params.envScale.rgb;
+    return envTexelAt(i) * params.envScale.rgb;
 }
 
 // Direct env light from the vertex's NEE technique `ds`, shadow ray, MIS against the BSDF

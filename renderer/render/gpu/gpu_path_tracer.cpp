@@ -130,6 +130,18 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (pt->m_productCacheCompiled)
         compile.defines.push_back("WAVELIT_PRODUCT_CACHE_BINDING=" +
                                   std::to_string(pt->m_productCacheBinding));
+    // The BVH's reads through texel buffers on a CPU device (lavapipe: a texel fetch is a gather
+    // in registers, an SSBO read a loop over the lanes; docs/performance.md "Texel buffers"),
+    // the two bindings after all others. Same words, same images. Env
+    // WAVELIT_SCENE_READS=texels|storage overrides the rule (tests compare the two).
+    const std::string reads = gpu_tracer::envOr("WAVELIT_SCENE_READS", "");
+    const uint32_t bindingCount =
+        pt->m_productCacheBinding + (pt->m_productCacheCompiled ? 1u : 0u);
+    if (reads == "texels" || (reads != "storage" && pt->m_context->cpuDevice())) {
+        pt->m_sceneTexelBinding = bindingCount;
+        compile.defines.push_back("WAVELIT_SCENE_TEXELS_BINDING=" +
+                                  std::to_string(pt->m_sceneTexelBinding));
+    }
     std::string shaderPath =
         (std::filesystem::path(gpuShaderDirectory()) / "path_tracer.comp").string();
     pt->m_brdfPluginsCompiled = packed->brdfPlugins;
@@ -137,8 +149,9 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!spirv)
         return spirv.error();
     using vk::BindingKind;
-    std::vector<BindingKind> bindings(pt->m_productCacheBinding + (pt->m_productCacheCompiled ? 1u : 0u),
-                                      BindingKind::StorageBuffer);
+    std::vector<BindingKind> bindings(bindingCount, BindingKind::StorageBuffer);
+    if (pt->m_sceneTexelBinding)
+        bindings.insert(bindings.end(), pt->sceneTexelViewCount(), BindingKind::UniformTexelBuffer);
     // A storage buffer, not a uniform buffer: lavapipe re-compiles per bind otherwise (header).
     bindings[kParams] = BindingKind::StorageBuffer;
     auto kernel = vk::ComputeKernel::create(
@@ -189,6 +202,23 @@ void GpuPathTracer::bindAll(uint32_t binding, const vk::Buffer& buffer) {
     m_kernel.bind(binding, buffer);
     if (m_productCacheCompiled)
         m_cacheKernel.bind(binding, buffer);
+}
+
+util::Status GpuPathTracer::bindSceneTexels(uint32_t binding, const vk::Buffer& buffer) {
+    if (!m_sceneTexelBinding)
+        return util::okStatus();
+    for (uint32_t i = 0; i < sceneTexelViewCount(); ++i) {
+        if (kSceneTexelViews[i].buffer != binding)
+            continue;
+        const VkFormat format = kSceneTexelViews[i].format;
+        if (auto bound = m_kernel.bindTexels(m_sceneTexelBinding + i, buffer, format); !bound)
+            return bound;
+        if (m_productCacheCompiled)
+            if (auto bound = m_cacheKernel.bindTexels(m_sceneTexelBinding + i, buffer, format);
+                !bound)
+                return bound;
+    }
+    return util::okStatus();
 }
 
 } // namespace gpu_tracer

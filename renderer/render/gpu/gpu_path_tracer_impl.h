@@ -46,6 +46,21 @@ enum Binding : uint32_t {
     kSamplerWords
 };
 
+// The buffers path_tracer.comp also reads as texels where the driver compiles it so (CPU
+// devices: gpu_path_tracer.cpp create), in the order of their bindings after all others (its
+// WAVELIT_SCENE_TEXELS_BINDING + i declarations); the sampler tables' two views only in kernels
+// with direction samplers.
+struct SceneTexelView {
+    uint32_t buffer; // the storage binding of the same buffer
+    VkFormat format;
+};
+inline constexpr SceneTexelView kSceneTexelViews[] = {
+    {kNodes, VK_FORMAT_R32G32B32A32_UINT},     {kTriangles, VK_FORMAT_R32G32B32A32_UINT},
+    {kMaterials, VK_FORMAT_R32G32B32A32_UINT}, {kLights, VK_FORMAT_R32G32B32A32_UINT},
+    {kEnvironment, VK_FORMAT_R32_SFLOAT},      {kSamplerWords, VK_FORMAT_R32_UINT},
+    {kSamplerWords, VK_FORMAT_R32G32_UINT}};
+inline constexpr uint32_t kSceneTexelViewsWithoutSamplers = 5;
+
 // LightMix (shaders/common/light_groups.glsl): with RenderOptions::lightGroups two more bindings
 // follow the last of the list above (7 and 8 for `bsdf`, 10 and 11 with samplers): the group info
 // (this packing) and the layers. kNoLightGroup: no emissive material.
@@ -173,6 +188,12 @@ private:
     vk::Buffer m_productCache;
     uint32_t m_productCacheBinding = 0;
     bool m_productCacheCompiled = false;
+    // The first binding of kSceneTexelViews (after all others); 0 = the kernel reads no texels.
+    uint32_t m_sceneTexelBinding = 0;
+    uint32_t sceneTexelViewCount() const {
+        return usesDirectionSamplers() ? uint32_t(std::size(kSceneTexelViews))
+                                       : kSceneTexelViewsWithoutSamplers;
+    }
     std::vector<GpuSamplerMaterial> m_packedSamplerMaterials;
     bool m_productCacheReady = false;  // entries built for the current scene and camera
     bool m_productCacheBuilding = false; // the pass in progress builds them
@@ -191,6 +212,9 @@ private:
     vk::ComputeKernel m_cacheKernel;
     // Points `binding` of every kernel at `buffer` (the kernels share the binding layout).
     void bindAll(uint32_t binding, const vk::Buffer& buffer);
+    // The texel views of the buffer at storage `binding` in every kernel, when the kernels read
+    // texels (else nothing).
+    util::Status bindSceneTexels(uint32_t binding, const vk::Buffer& buffer);
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;
     int m_passes = 0;

@@ -295,6 +295,62 @@ TEST(GpuPathTracer, KernelShapesRenderTheSameImage) {
     }
 }
 
+// The scene's buffers read as storage buffers (GPUs) or through texel views (CPU devices:
+// kSceneTexelViews) are the same words: the same image bit for bit, for `bsdf`, `mis` and
+// `wavelet` where the sphere keeps its product (its cache's build kernel traces too), with a
+// point light (the light records), and again after setScene swaps in a finer mesh, whose new
+// buffers take new views.
+TEST(GpuPathTracer, SceneReadsThroughTexelsRenderTheSameImage) {
+    const scene::Environment sunSky =
+        makeSunSkyEnvironment(256, glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), 1e4, 13.0);
+    auto withLamp = [&](std::shared_ptr<scene::Scene> scene) {
+        scene::Light lamp;
+        lamp.id = 7;
+        lamp.name = "lamp";
+        lamp.position = glm::vec3(1.5f, 2.0f, 2.0f);
+        lamp.intensity = 40.0f;
+        scene->lighting.lights.push_back(lamp);
+        return scene;
+    };
+    auto first = withLamp(glossySphereOnGround(sunSky.image, 0.2f));
+    auto second = withLamp(glossySphereOnGround(sunSky.image, 0.2f));
+    second->objects[0].transform.translation += glm::vec3(0.3f, 0.0f, 0.0f);
+    auto firstBvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*first));
+    for (SamplerKind kind : {SamplerKind::Bsdf, SamplerKind::Mis, SamplerKind::Wavelet}) {
+        RenderOptions options = testOptions(4);
+        options.sampler = kind;
+        util::ImageRGB before[2], after[2];
+        const char* reads[2] = {"storage", "texels"};
+        for (int i = 0; i < 2; ++i) {
+            ScopedEnv mode("WAVELIT_SCENE_READS", reads[i]);
+            auto gpu = createGpuPathTracer(first, firstBvh, options);
+            ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+            before[i] = renderPasses(**gpu, 2);
+            // A finer mesh: every geometry buffer is new, and so are its views.
+            auto finer = makeFurnaceScene(first->materials[0], glm::vec3(1.0f), 64, 32);
+            second->objects[0].meshPath = finer->objects[0].meshPath;
+            second->objects[0].mesh = finer->objects[0].mesh;
+            auto status = (*gpu)->setScene(
+                second, std::make_shared<const scene::Bvh>(scene::buildBvh(*second)));
+            ASSERT_TRUE(status.ok()) << status.error().message();
+            after[i] = renderPasses(**gpu, 2);
+            EXPECT_EQ((*gpu)->validationMessageCount(), 0) << reads[i];
+        }
+        for (const util::ImageRGB* images : {before, after}) {
+            ASSERT_TRUE(allFinite(images[0]));
+            EXPECT_GT(meanLuminance(images[0]), 0.0);
+            int differing = 0;
+            for (size_t i = 0; i < images[0].pixels.size(); ++i)
+                differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
+            EXPECT_EQ(differing, 0) << samplerKindName(kind);
+        }
+        int changed = 0;
+        for (size_t i = 0; i < before[0].pixels.size(); ++i)
+            changed += before[0].pixels[i] != after[0].pixels[i] ? 1 : 0;
+        EXPECT_GT(changed, 0) << "the swapped scene renders differently";
+    }
+}
+
 TEST(GpuPathTracer, ShaderCompileErrorNamesFileAndLine) {
     fs::path dir = fs::temp_directory_path() / "wavelit_gpu_broken_shader";
     fs::create_directories(dir);

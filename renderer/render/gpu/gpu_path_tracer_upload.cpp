@@ -53,7 +53,7 @@ std::vector<GpuBufferPlan> sceneBufferPlans(const GpuSceneData& d, const scene::
 
 util::Result<vk::Buffer> GpuPathTracer::upload(const void* data, size_t bytes,
                                                VkBufferUsageFlags usage, const std::string& name) {
-    if (usage == VK_BUFFER_USAGE_STORAGE_BUFFER_BIT &&
+    if ((usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) &&
         bytes > m_context->limits().maxStorageBufferRange)
         return util::makeError(util::ErrorKind::Unsupported, "",
                                name + " needs " + std::to_string(bytes) +
@@ -138,6 +138,9 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         d.params.samplerEnv[1] = samplerEnvRoulette;
     }
     constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    // Buffers the kernel also reads as texels where it is compiled so (kSceneTexelViews).
+    const VkBufferUsageFlags kScene =
+        m_sceneTexelBinding ? kStorage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : kStorage;
     struct Upload {
         uint32_t binding;
         vk::Buffer* target;
@@ -150,15 +153,15 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         {kParams, &m_params, &d.params, sizeof(d.params), kStorage, "params",
          m_params.handle() == VK_NULL_HANDLE ||
              std::memcmp(&d.params, &m_uploadedParams, sizeof(d.params)) != 0},
-        {kNodes, &m_nodes, bvh.nodes.data(), bvh.nodes.size() * sizeof(scene::BvhNode), kStorage,
+        {kNodes, &m_nodes, bvh.nodes.data(), bvh.nodes.size() * sizeof(scene::BvhNode), kScene,
          "bvh nodes", mask.geometry},
         {kTriangles, &m_triangles, bvh.triangles.data(),
-         bvh.triangles.size() * sizeof(scene::BvhTriangle), kStorage, "bvh triangles", mask.geometry},
+         bvh.triangles.size() * sizeof(scene::BvhTriangle), kScene, "bvh triangles", mask.geometry},
         {kMaterials, &m_materials, d.materials.data(), d.materials.size() * sizeof(GpuMaterial),
-         kStorage, "materials", mask.materials},
+         kScene, "materials", mask.materials},
         {kEnvironment, &m_environment, d.envTexels.data(), d.envTexels.size() * sizeof(float),
-         kStorage, "environment", mask.envTexels},
-        {kLights, &m_lights, d.lights.data(), d.lights.size() * sizeof(GpuLight), kStorage,
+         kScene, "environment", mask.envTexels},
+        {kLights, &m_lights, d.lights.data(), d.lights.size() * sizeof(GpuLight), kScene,
          "lights", mask.lights},
         {kEnvTable, &m_envTable, samplers.envNodes.data(),
          samplers.envNodes.size() * sizeof(samplers.envNodes[0]), kStorage, "env sampling table",
@@ -167,7 +170,7 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
          samplers.materials.size() * sizeof(GpuSamplerMaterial), kStorage, "sampler materials",
          uploadSamplers},
         {kSamplerWords, &m_samplerWords, samplers.words.data(),
-         samplers.words.size() * sizeof(uint32_t), kStorage, "sampler tables", uploadSamplers},
+         samplers.words.size() * sizeof(uint32_t), kScene, "sampler tables", uploadSamplers},
     };
     // The first six are the scene's; the last three exist only with direction samplers.
     const size_t uploadCount = usesDirectionSamplers() ? std::size(uploads) : 6;
@@ -214,6 +217,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     for (auto& [i, buffer] : fresh) {
         *uploads[i].target = std::move(buffer);
         bindAll(uploads[i].binding, *uploads[i].target);
+        if (auto bound = bindSceneTexels(uploads[i].binding, *uploads[i].target); !bound)
+            return bound;
     }
     for (size_t i = 0; i < uploadCount; ++i)
         if (uploads[i].send && uploads[i].data && uploads[i].bytes)

@@ -9,8 +9,9 @@
 #define WAVELIT_ENV_PRODUCT_TABLES_GLSL
 
 #include "common/octahedral.glsl"
+#include "sampling/sampler_words.glsl"
 
-uint flatHeader(SamplerMaterial sm, uint field) { return samplerWords[sm.tableOffset + field]; }
+uint flatHeader(SamplerMaterial sm, uint field) { return samplerWord(sm.tableOffset + field); }
 
 // The bin of env-local axis direction `axisLocal` (MaterialProductTables::binOf): its window
 // (k, ox, oy) and env factor.
@@ -21,8 +22,8 @@ void flatBinOf(SamplerMaterial sm, vec3 axisLocal, out int k, out int ox, out in
     int bx = min(int(p.x * float(bins)), bins - 1), by = min(int(p.y * float(bins)), bins - 1);
     uint at = sm.tableOffset + WAVELIT_FLAT_HEADER_WORDS + WAVELIT_FLAT_BIN_WORDS * uint(by * bins + bx);
     // (k, ox) and (oy, factor): two u64 loads from the even `at`.
-    uvec2 kox = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_BIN_K) >> 1u]);
-    uvec2 oyf = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_BIN_OY) >> 1u]);
+    uvec2 kox = unpackUint2x32(samplerPair((at + WAVELIT_FLAT_BIN_K) >> 1u));
+    uvec2 oyf = unpackUint2x32(samplerPair((at + WAVELIT_FLAT_BIN_OY) >> 1u));
     k = int(kox.x);
     ox = int(kox.y);
     oy = int(oyf.x);
@@ -34,14 +35,14 @@ void flatFactorNodes(SamplerMaterial sm, uint factor, out uint firstNode, out ui
     uint at = sm.tableOffset + WAVELIT_FLAT_HEADER_WORDS +
               WAVELIT_FLAT_BIN_WORDS * flatHeader(sm, WAVELIT_FLAT_BIN_COUNT) +
               WAVELIT_FLAT_FACTOR_WORDS * factor;
-    uvec2 w = unpackUint2x32(samplerWords64[(at + WAVELIT_FLAT_FACTOR_FIRST_NODE) >> 1u]);
+    uvec2 w = unpackUint2x32(samplerPair((at + WAVELIT_FLAT_FACTOR_FIRST_NODE) >> 1u));
     firstNode = w.x;
     nodeCount = w.y;
 }
 
 // The factor's root scaling coefficient F0(0,0).
 float flatScaling(SamplerMaterial sm, uint factor) {
-    return uintBitsToFloat(samplerWords[sm.scalingOffset + factor]);
+    return uintBitsToFloat(samplerWord(sm.scalingOffset + factor));
 }
 
 // Node `node` (relative to the factor's first) of a factor: its three Haar details and the
@@ -52,12 +53,12 @@ uint flatNodeBase(SamplerMaterial sm, uint firstNode, int node) {
     return sm.nodeOffset + (firstNode + uint(node)) * WAVELIT_FLAT_NODE_WORDS;
 }
 vec3 flatNodeDetails(uint base) {
-    return vec3(uintBitsToFloat(samplerWords[base + WAVELIT_FLAT_NODE_DETAIL]),
-                uintBitsToFloat(unpackUint2x32(samplerWords64[(base + WAVELIT_FLAT_NODE_DETAIL + 1u) >> 1u])));
+    return vec3(uintBitsToFloat(samplerWord(base + WAVELIT_FLAT_NODE_DETAIL)),
+                uintBitsToFloat(unpackUint2x32(samplerPair((base + WAVELIT_FLAT_NODE_DETAIL + 1u) >> 1u))));
 }
 ivec4 flatNodeChildren(uint base) {
     uint at = (base + WAVELIT_FLAT_NODE_CHILD) >> 1u;
-    return ivec4(unpackUint2x32(samplerWords64[at]), unpackUint2x32(samplerWords64[at + 1u]));
+    return ivec4(unpackUint2x32(samplerPair(at)), unpackUint2x32(samplerPair(at + 1u)));
 }
 
 #endif
