@@ -3,7 +3,9 @@
 // Why: lavapipe (Mesa 22.3 gallivm) loads an SSBO one lane and one component at a time, inserting
 // each word into a vector that lives on the stack: a store-forwarding stall per lane and per
 // component, ~45% of a `bsdf` pass in perf. A 64-bit component carries two words, so the same
-// bytes cost half the loads (docs/performance.md "Lavapipe throughput (issue 12)").
+// bytes cost half the loads (docs/performance.md "Lavapipe throughput (issue 12)"). On CPU devices
+// the kernel now reads most of these records through texel views instead (path_tracer.comp,
+// WAVELIT_SCENE_TEXELS_BINDING): these views are a GPU's reads.
 // The including shader enables GL_EXT_shader_explicit_arithmetic_types_int64.
 #ifndef WAVELIT_PACKED64_GLSL
 #define WAVELIT_PACKED64_GLSL
