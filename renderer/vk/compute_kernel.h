@@ -18,8 +18,9 @@ class Buffer;
 class Context;
 
 // UniformTexelBuffer: the buffer seen as texels (a `samplerBuffer` read with texelFetch; the
-// buffer needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). lavapipe reads texels through its texture path, a gather in registers,
-// where an SSBO read is a loop over the lanes (docs/performance.md "Texel buffers").
+// buffer needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). lavapipe reads texels through its
+// texture path, a gather in registers, where an SSBO read is a loop over the lanes
+// (docs/performance.md "Texel buffers").
 enum class BindingKind { StorageBuffer, UniformBuffer, UniformTexelBuffer };
 
 // A rectangle of workgroups [baseX, baseX + groupsX) x [baseY, baseY + groupsY) (z: one layer).

@@ -1,7 +1,8 @@
 // Software BVH traversal (lavapipe has no ray queries): the layout of renderer/scene/bvh.h and the
 // same slab test and Moller-Trumbore arithmetic as bvh.cpp's CPU traversal, nearer child first
 // with a fixed stack. The including shader declares `bvhNodes64` and `bvhTriangles64`, the
-// 64-bit views of common/packed64.glsl.
+// 64-bit views of common/packed64.glsl, and with WAVELIT_SCENE_TEXELS_BINDING their texel views
+// `bvhNodeTexels` and `bvhTriangleTexels` (RGBA32UI), which the traversal then reads instead.
 #ifndef WAVELIT_BVH_GLSL
 #define WAVELIT_BVH_GLSL
 

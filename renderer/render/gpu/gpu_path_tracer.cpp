@@ -130,10 +130,11 @@ GpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (pt->m_productCacheCompiled)
         compile.defines.push_back("WAVELIT_PRODUCT_CACHE_BINDING=" +
                                   std::to_string(pt->m_productCacheBinding));
-    // The BVH's reads through texel buffers on a CPU device (lavapipe: a texel fetch is a gather
-    // in registers, an SSBO read a loop over the lanes; docs/performance.md "Texel buffers"),
-    // the two bindings after all others. Same words, same images. Env
-    // WAVELIT_SCENE_READS=texels|storage overrides the rule (tests compare the two).
+    // On a CPU device the kernel reads the scene through texel views of its buffers
+    // (kSceneTexelViews, bound after all others): llvmpipe fetches a texel as a gather in
+    // registers, an SSBO word in a loop over the lanes (docs/performance.md "Texel buffers": a
+    // fifth of a pass). Same words, same images. Env WAVELIT_SCENE_READS=texels|storage
+    // overrides the rule (tests compare the two).
     const std::string reads = gpu_tracer::envOr("WAVELIT_SCENE_READS", "");
     const uint32_t bindingCount =
         pt->m_productCacheBinding + (pt->m_productCacheCompiled ? 1u : 0u);
@@ -202,6 +203,22 @@ void GpuPathTracer::bindAll(uint32_t binding, const vk::Buffer& buffer) {
     m_kernel.bind(binding, buffer);
     if (m_productCacheCompiled)
         m_cacheKernel.bind(binding, buffer);
+}
+
+util::Status GpuPathTracer::checkSceneTexels(uint32_t binding, size_t bytes,
+                                             const std::string& name) const {
+    if (!m_sceneTexelBinding)
+        return util::okStatus();
+    const uint64_t limit = m_context->limits().maxTexelBufferElements;
+    for (uint32_t i = 0; i < sceneTexelViewCount(); ++i) {
+        const uint64_t texels = bytes / vk::ComputeKernel::texelBytes(kSceneTexelViews[i].format);
+        if (kSceneTexelViews[i].buffer == binding && texels > limit)
+            return util::makeError(util::ErrorKind::Unsupported, "",
+                                   name + " is " + std::to_string(texels) +
+                                       " texels, more than the device's texel-buffer limit of " +
+                                       std::to_string(limit));
+    }
+    return util::okStatus();
 }
 
 util::Status GpuPathTracer::bindSceneTexels(uint32_t binding, const vk::Buffer& buffer) {

@@ -212,8 +212,10 @@ private:
     vk::ComputeKernel m_cacheKernel;
     // Points `binding` of every kernel at `buffer` (the kernels share the binding layout).
     void bindAll(uint32_t binding, const vk::Buffer& buffer);
-    // The texel views of the buffer at storage `binding` in every kernel, when the kernels read
-    // texels (else nothing).
+    // Whether `bytes` at storage `binding` fit the device's texel views (checked before any
+    // buffer is made), and the views of the buffer there in every kernel; both nothing when the
+    // kernels read no texels.
+    util::Status checkSceneTexels(uint32_t binding, size_t bytes, const std::string& name) const;
     util::Status bindSceneTexels(uint32_t binding, const vk::Buffer& buffer);
     std::unique_ptr<vk::CommandRunner> m_runner;
     IntegratorTimings m_timings;

@@ -194,6 +194,11 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
         if (auto fits = checkPlan(std::move(plans)); !fits)
             return fits.error();
     }
+    for (size_t i = 0; i < uploadCount; ++i)
+        if (uploads[i].send)
+            if (auto fits = checkSceneTexels(uploads[i].binding, uploads[i].bytes, uploads[i].name);
+                !fits)
+                return fits;
     // A buffer of the same size is written in place (most edits keep every size): creating and
     // freeing ~2 MB of buffers per edit cost a Vulkan allocation each and ~45 KB of validation-
     // layer bookkeeping per edit that was never given back. New buffers are all created before
