@@ -266,6 +266,17 @@ TEST(GpuPathTracer, WaveletMatchesCpuWithTheSameRandomStreams) {
     expectGpuMatchesCpu(glossySphereOnGround(sunSky.image, 0.2f), SamplerKind::Wavelet);
 }
 
+// Two renders of one scene by two code paths that must compute the same numbers: a lit,
+// finite image, the same bit for bit.
+void expectTheSameImage(const util::ImageRGB& a, const util::ImageRGB& b, const std::string& what) {
+    ASSERT_TRUE(allFinite(a)) << what;
+    EXPECT_GT(meanLuminance(a), 0.0) << what;
+    int differing = 0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        differing += a.pixels[i] != b.pixels[i] ? 1 : 0;
+    EXPECT_EQ(differing, 0) << what;
+}
+
 // The kernel's two code shapes (path_vertex.glsl: one loop on GPUs, `wavelet`'s camera vertex in
 // its own copy on CPU devices) compute the same estimator with the same numbers: the same image
 // bit for bit, for `wavelet` where the sphere keeps its product and for `mis`.
@@ -286,12 +297,7 @@ TEST(GpuPathTracer, KernelShapesRenderTheSameImage) {
             images[i] = renderPasses(**gpu, 3);
             EXPECT_EQ((*gpu)->validationMessageCount(), 0);
         }
-        ASSERT_TRUE(allFinite(images[0]));
-        EXPECT_GT(meanLuminance(images[0]), 0.0);
-        int differing = 0;
-        for (size_t i = 0; i < images[0].pixels.size(); ++i)
-            differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
-        EXPECT_EQ(differing, 0) << samplerKindName(kind);
+        expectTheSameImage(images[0], images[1], samplerKindName(kind));
     }
 }
 
@@ -313,9 +319,14 @@ TEST(GpuPathTracer, SceneReadsThroughTexelsRenderTheSameImage) {
         return scene;
     };
     auto first = withLamp(glossySphereOnGround(sunSky.image, 0.2f));
+    auto firstBvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*first));
+    // Moved, and a finer mesh: every geometry buffer is new, and so are its views.
     auto second = withLamp(glossySphereOnGround(sunSky.image, 0.2f));
     second->objects[0].transform.translation += glm::vec3(0.3f, 0.0f, 0.0f);
-    auto firstBvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*first));
+    auto finer = makeFurnaceScene(first->materials[0], glm::vec3(1.0f), 64, 32);
+    second->objects[0].meshPath = finer->objects[0].meshPath;
+    second->objects[0].mesh = finer->objects[0].mesh;
+    auto secondBvh = std::make_shared<const scene::Bvh>(scene::buildBvh(*second));
     for (SamplerKind kind : {SamplerKind::Bsdf, SamplerKind::Mis, SamplerKind::Wavelet}) {
         RenderOptions options = testOptions(4);
         options.sampler = kind;
@@ -326,24 +337,13 @@ TEST(GpuPathTracer, SceneReadsThroughTexelsRenderTheSameImage) {
             auto gpu = createGpuPathTracer(first, firstBvh, options);
             ASSERT_TRUE(gpu.ok()) << gpu.error().message();
             before[i] = renderPasses(**gpu, 2);
-            // A finer mesh: every geometry buffer is new, and so are its views.
-            auto finer = makeFurnaceScene(first->materials[0], glm::vec3(1.0f), 64, 32);
-            second->objects[0].meshPath = finer->objects[0].meshPath;
-            second->objects[0].mesh = finer->objects[0].mesh;
-            auto status = (*gpu)->setScene(
-                second, std::make_shared<const scene::Bvh>(scene::buildBvh(*second)));
+            auto status = (*gpu)->setScene(second, secondBvh);
             ASSERT_TRUE(status.ok()) << status.error().message();
             after[i] = renderPasses(**gpu, 2);
             EXPECT_EQ((*gpu)->validationMessageCount(), 0) << reads[i];
         }
-        for (const util::ImageRGB* images : {before, after}) {
-            ASSERT_TRUE(allFinite(images[0]));
-            EXPECT_GT(meanLuminance(images[0]), 0.0);
-            int differing = 0;
-            for (size_t i = 0; i < images[0].pixels.size(); ++i)
-                differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
-            EXPECT_EQ(differing, 0) << samplerKindName(kind);
-        }
+        expectTheSameImage(before[0], before[1], std::string(samplerKindName(kind)) + ", before");
+        expectTheSameImage(after[0], after[1], std::string(samplerKindName(kind)) + ", after");
         int changed = 0;
         for (size_t i = 0; i < before[0].pixels.size(); ++i)
             changed += before[0].pixels[i] != after[0].pixels[i] ? 1 : 0;
