@@ -4,7 +4,7 @@
 #include "relight/relight_preview.h"
 
 #include "relight/camera_lights.h"
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 #include "util/timer.h"
 #include "wavelet/haar.h"
 
@@ -137,7 +137,7 @@ void RelightPreview::buildDragCaches() {
         f.cell = std::max(1e-4f, 4.0f * own.bounds.radius / std::sqrt(float(std::max<size_t>(f.ownOffset.size(), 1))));
         for (uint32_t k = 0; k < f.ownOffset.size(); ++k) f.ownGrid[cellKey(f.ownOffset[k], f.cell)].push_back(k);
     }
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         const PreviewPoint& p = m_points[i];
         if (!p.hit || p.object == f.object) return;
         PointState without = m_states[i];
@@ -154,7 +154,7 @@ void RelightPreview::buildDragCaches() {
 void RelightPreview::settleFieldDrag(bool dropField) {
     FieldDrag& f = *m_field;
     const TransferContext ctx = context();
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         if (!f.approximate[i]) return;
         f.approximate[i] = 0;
         updateOcclusion(ctx, m_points[i], m_states[i], uint32_t(f.object));
@@ -198,7 +198,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     std::atomic<int64_t> rebuiltNs{0}; // CPU time of the rebuilt points (hit changed, or own)
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
         reused(m_points.size(), 0);
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
         PointDragCache& cache = f.caches[i];

@@ -1,6 +1,6 @@
 #include "relight/first_answer.h"
 
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -73,7 +73,7 @@ util::ImageRGB correctedFirstAnswer(const FirstAnswerBase& then, const RelightPr
     auto coarseOf = [&](int x, int y) { return size_t(nearest(y, fh, ch)) * size_t(cw) + size_t(nearest(x, fw, cw)); };
     // Rows in parallel: the re-cast camera rays are most of the cost.
     util::ImageRGB full(fw, fh);
-    parallelFor(size_t(fh), coarseNow.settings().threads, [&](size_t row) {
+    util::parallelFor(size_t(fh), coarseNow.settings().threads, [&](size_t row) {
         const int y = int(row);
         for (int x = 0; x < fw; ++x) {
             const size_t i = size_t(y) * size_t(fw) + size_t(x), c = coarseOf(x, y);

@@ -10,7 +10,7 @@
 
 #include "relight/edit_rules.h"
 #include "relight/light_projection.h"
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 #include "relight/texel_values.h"
 
 #include <algorithm>
@@ -76,7 +76,7 @@ std::optional<RelightPreview::MaterialFirstAnswer> RelightPreview::materialFirst
 
     answer.image = util::ImageRGB(m_settings.width, m_settings.height);
     std::vector<uint8_t> touched(m_points.size(), 0);
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         const PreviewPoint& p = m_points[i];
         glm::vec3 lights(0.0f); // radiance()'s sums, in its order
         for (size_t k = 0; k < m_cameraLights.size(); ++k) lights += m_cameraLights[k][i] * powers[k];

@@ -1,6 +1,6 @@
 #include "relight/preview_points.h"
 
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 
 #include <glm/geometric.hpp>
 
@@ -85,7 +85,7 @@ PreviewPoint castPreviewPoint(const scene::Scene& scene, const scene::Bvh& bvh, 
 std::vector<PreviewPoint> castPreviewPoints(const scene::Scene& scene, const scene::Bvh& bvh,
                                             int width, int height, int threads) {
     std::vector<PreviewPoint> points(size_t(width) * size_t(height));
-    parallelFor(points.size(), threads, [&](size_t i) {
+    util::parallelFor(points.size(), threads, [&](size_t i) {
         points[i] = castPreviewPoint(scene, bvh, width, height, int(i % size_t(width)), int(i / size_t(width)));
     });
     return points;

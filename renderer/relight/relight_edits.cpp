@@ -3,7 +3,7 @@
 #include "relight/relight_preview.h"
 
 #include "relight/edit_rules.h"
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 #include "util/timer.h"
 
 #include <glm/geometric.hpp>
@@ -182,7 +182,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     const TransferContext ctx = context();
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     std::vector<uint8_t> touched(m_points.size(), 0);
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
         for (size_t k : lights) updateCameraLight(k, i, rays);
@@ -300,7 +300,7 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
 std::vector<PreviewPoint> RelightPreview::recastNear(const std::vector<BoundingSphere>& spheres) const {
     std::vector<PreviewPoint> cast = m_points;
     const glm::vec3 eye = m_scene->camera.position;
-    parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(cast.size(), m_settings.threads, [&](size_t i) {
         const glm::vec3 dir = -cast[i].wo;
         for (const BoundingSphere& b : spheres) {
             const glm::vec3 oc = eye - b.centre;

@@ -2,7 +2,7 @@
 
 #include "relight/camera_lights.h"
 #include "relight/light_projection.h"
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 
 namespace wavelit::relight {
 
@@ -60,7 +60,7 @@ void RelightPreview::rebuildAll(const scene::Scene& scene) {
     m_cameraLights.assign(m_scene->lighting.lights.size(), std::vector<glm::vec3>(m_points.size()));
     const TransferContext ctx = context();
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
-    parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
+    util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         for (size_t k = 0; k < m_cameraLights.size(); ++k) updateCameraLight(k, i, rays);
         if (m_points[i].hit) m_states[i] = buildPointState(ctx, m_points[i]);
         else m_background[i] = environmentRadiance(m_scene->lighting.environment, -m_points[i].wo);

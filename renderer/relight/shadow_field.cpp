@@ -1,6 +1,6 @@
 #include "relight/shadow_field.h"
 
-#include "relight/parallel_for.h"
+#include "util/parallel_for.h"
 
 #include <glm/geometric.hpp>
 
@@ -29,7 +29,7 @@ ShadowField ShadowField::build(const ObjectOccluder& occluder, const TexelDirect
     f.m_inside.assign(shells * dirCount, 0);
     TexelBits all = makeBits(maskDirs.count());
     for (size_t t = 0; t < maskDirs.count(); ++t) setBit(all, t);
-    parallelFor(shells * dirCount, threads, [&](size_t n) {
+    util::parallelFor(shells * dirCount, threads, [&](size_t n) {
         const glm::vec3 origin = occluder.bounds.centre + f.sampleOffset(n / dirCount, n % dirCount);
         const TexelBits cone = coneTexels(occluder.bounds, origin, maskDirs, all);
         if (!anyBit(cone)) return;

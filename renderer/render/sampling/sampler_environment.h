@@ -38,6 +38,10 @@ namespace wavelit::render {
 struct SamplerEnvironmentOptions {
     int maxLevel = 10; // 1024^2 octahedral texels: finer costs memory the samplers cannot use
     int minLevel = 4;
+    // Threads for the conservative map's build (0: every hardware thread). The tables are the
+    // same bit for bit whatever the count, so it is no part of the tables' identity
+    // (direction_sampler_tables.cpp sameEnvOptions).
+    int threads = 0;
 };
 
 class SamplerEnvironment {

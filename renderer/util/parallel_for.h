@@ -1,0 +1,46 @@
+// Runs body over [0, count) on `threads` std::threads (the caller's thread is worker 0), in
+// interleaved blocks of 64 items: work whose cost varies across the range (a shadow region in one
+// corner of a preview, the poles of an env map) spreads over the workers better than with one
+// block each. Which worker runs an item depends only on its index and the worker count, and
+// every item is run exactly once, so results that do not depend on the order of the items are
+// the same whatever the thread count (the relight preview and the sampler tables are compared
+// bit for bit between thread counts).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace wavelit::util {
+
+// The number of workers parallelFor* uses for `count` items on `threads` threads (at least 1).
+inline size_t parallelWorkers(size_t count, int threads) {
+    return std::max<size_t>(1, std::min<size_t>(size_t(std::max(threads, 1)), count));
+}
+
+// body(worker, item), worker in [0, parallelWorkers(count, threads)): for per-worker scratch.
+template <typename F> void parallelForWorkers(size_t count, int threads, F&& body) {
+    const size_t workers = parallelWorkers(count, threads);
+    constexpr size_t kBlock = 64;
+    auto run = [&](size_t worker) {
+        for (size_t start = worker * kBlock; start < count; start += workers * kBlock)
+            for (size_t i = start, end = std::min(count, start + kBlock); i < end; ++i)
+                body(worker, i);
+    };
+    if (workers <= 1) {
+        run(0);
+        return;
+    }
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back(run, w);
+    run(0);
+    for (std::thread& t : pool) t.join();
+}
+
+// body(item).
+template <typename F> void parallelFor(size_t count, int threads, F&& body) {
+    parallelForWorkers(count, threads, [&](size_t, size_t i) { body(i); });
+}
+
+} // namespace wavelit::util
