@@ -64,7 +64,10 @@ util::Result<GpuSamplerData> packGpuSamplers(const SceneSamplerTables& tables, S
         d.envMean = float(env.cellAverage(0, 0, 0));
         d.envRoulette = misEnvRoulette(env.effectiveSolidAngle());
         d.envLevel = uint32_t(env.level());
-        if (d.lit)
+        // The env quadtree's nodes only for the kinds that descend it (a product's leaves refine
+        // into it: wavelet, oracle); the others draw from the exact tables below, and their kernel
+        // reads no node (a 512 x 256 map: 5.6 MB a `mis` tracer uploaded and never read).
+        if (d.lit && (kind == SamplerKind::Wavelet || kind == SamplerKind::Oracle))
             d.envNodes = env.fine().table();
         for (size_t i = 0; i < gpuMaterialCount && i < tables.samplerIndexOfMaterial.size(); ++i) {
             const int index = tables.samplerIndexOfMaterial[i];
