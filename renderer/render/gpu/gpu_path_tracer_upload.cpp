@@ -102,7 +102,8 @@ util::Status GpuPathTracer::uploadScene(const scene::Scene& scene, const scene::
     const SamplerTablesRebuilds rebuildsBefore = m_tablesCache.rebuilds();
     if (usesDirectionSamplers()) {
         if (m_createTables) {
-            // create() built them to choose the kernel's code: the same scene, one build.
+            // create() built them (beside the compile, or first for `wavelet`, whose kernel
+            // code depends on them): the same scene, one build.
             samplerTables = std::move(*m_createTables);
             m_createTables.reset();
         } else {
