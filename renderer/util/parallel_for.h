@@ -14,15 +14,20 @@
 
 namespace wavelit::util {
 
-// The number of workers parallelFor* uses for `count` items on `threads` threads (at least 1).
+inline constexpr size_t kParallelBlock = 64;
+
+// The number of workers parallelFor* uses for `count` items on `threads` threads: at least 1, and
+// no more than there are blocks (a worker without a block would be a thread, and per-worker
+// scratch, for nothing: 256 env rows on a 64-core machine are 4 blocks).
 inline size_t parallelWorkers(size_t count, int threads) {
-    return std::max<size_t>(1, std::min<size_t>(size_t(std::max(threads, 1)), count));
+    const size_t blocks = (count + kParallelBlock - 1) / kParallelBlock;
+    return std::max<size_t>(1, std::min<size_t>(size_t(std::max(threads, 1)), blocks));
 }
 
 // body(worker, item), worker in [0, parallelWorkers(count, threads)): for per-worker scratch.
 template <typename F> void parallelForWorkers(size_t count, int threads, F&& body) {
     const size_t workers = parallelWorkers(count, threads);
-    constexpr size_t kBlock = 64;
+    constexpr size_t kBlock = kParallelBlock;
     auto run = [&](size_t worker) {
         for (size_t start = worker * kBlock; start < count; start += workers * kBlock)
             for (size_t i = start, end = std::min(count, start + kBlock); i < end; ++i)
