@@ -10,8 +10,8 @@
 
 #include "relight/edit_rules.h"
 #include "relight/light_projection.h"
-#include "util/parallel_for.h"
 #include "relight/texel_values.h"
+#include "util/parallel_for.h"
 
 #include <algorithm>
 #include <string_view>

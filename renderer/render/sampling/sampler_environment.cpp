@@ -32,8 +32,8 @@ constexpr int kMaxEdgeSteps = 256;
 // once, at the larger of their two values (the same points both texels' walks visit: p1 of x - 1
 // and p0 of x are the same double), and every sine and cosine is computed once per row or once
 // per map; each point's direction and octahedral texel are the same doubles as walking each
-// texel's four edges on its own. 0.61 -> ~0.15 s for a 512 x 256 map on 2 cores (issue 12: the
-// first frame's floor).
+// texel's four edges on its own. The whole build of a 512 x 256 map: 0.76-0.84 -> 0.27-0.37 s
+// on 2 cores, 0.52 s on one (issue 12: the first frame's floor; docs/performance.md).
 void raiseAlongEquirectEdges(const util::ImageRGB& image, double scale, const glm::vec3& tint,
                              const wavelet::OctahedralMap& map, wavelet::SquareGrid& grid,
                              int threads) {
