@@ -95,7 +95,7 @@ int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
                                    "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride",
                                    "--field-shells", "--field-directions", "--field-inner", "--field-outer"},
-                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest",
+                            {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest", "--field-carry-own",
                              "--first-untruncated-narrow"});
     if (!args) return reportError(args.error());
     if (args->positional().size() != 1)
@@ -121,6 +121,7 @@ int runRelight(const std::vector<std::string>& argv) {
     fieldSettings.shells = *fieldShells;
     fieldSettings.directionLevel = *fieldDirections;
     fieldSettings.interpolate = !args->has("--field-nearest");
+    fieldSettings.reuseOwnStates = args->has("--field-carry-own");
     for (auto [flag, target] : {std::pair{"--field-inner", &fieldSettings.innerRatio},
                                 std::pair{"--field-outer", &fieldSettings.outerRatio}})
         if (auto v = args->value(flag)) {
@@ -199,6 +200,7 @@ int runRelight(const std::vector<std::string>& argv) {
             fieldReport = {{"object", scene.objects[*object].name}, {"shells", fieldSettings.shells},
                            {"directionSide", 1 << fieldSettings.directionLevel},
                            {"interpolate", fieldSettings.interpolate},
+                           {"carryOwnStates", fieldSettings.reuseOwnStates},
                            {"insideSamples", (*preview)->shadowField()->insideSamples()},
                            {"innerRatio", fieldSettings.innerRatio}, {"outerRatio", fieldSettings.outerRatio},
                            {"fieldMs", info.fieldMs}, {"fieldBytes", info.fieldBytes}, {"cacheMs", info.cacheMs},
@@ -310,6 +312,7 @@ int runRelight(const std::vector<std::string>& argv) {
             e["pointsRebuilt"] = summary.pointsRebuilt;
             e["fieldFallbacks"] = summary.fieldFallbacks;
             e["selfMasksReused"] = summary.selfMasksReused;
+            e["statesCarried"] = summary.statesCarried;
             e["cacheMs"] = summary.cacheMs;
             e["rebuiltCpuMs"] = summary.rebuiltCpuMs; // of incrementalCpuMs: the hit-changed points
         }

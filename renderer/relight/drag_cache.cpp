@@ -40,6 +40,8 @@ size_t PointDragCache::bytes() const {
     size_t b = sizeof(PointDragCache) + visible.capacity() * sizeof(uint64_t) + rank.capacity() * sizeof(uint16_t) +
                values.capacity() * sizeof(float) + lights.capacity() * sizeof(lights[0]);
     for (const auto& l : lights) b += l.capacity() * sizeof(LightContribution);
+    b += lightTexels.capacity() * sizeof(lightTexels[0]) + (lightSum.capacity() + lightSum0.capacity()) * sizeof(glm::vec3);
+    for (const TexelBits& t : lightTexels) b += t.capacity() * sizeof(uint64_t);
     return b;
 }
 
@@ -65,7 +67,17 @@ PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPo
     c.envBase0 = without.envTerm0;
     const auto& lights = ctxWithout.scene->lighting.lights;
     c.lights.resize(lights.size());
-    for (size_t k = 0; k < lights.size(); ++k) seenLightContributions(ctxWithout, p, without, lights[k], c.lights[k]);
+    c.lightTexels.assign(lights.size(), makeBits(ctxWithout.dirs->count()));
+    c.lightSum.assign(lights.size(), glm::vec3(0.0f));
+    c.lightSum0.assign(lights.size(), glm::vec3(0.0f));
+    for (size_t k = 0; k < lights.size(); ++k) {
+        seenLightContributions(ctxWithout, p, without, lights[k], c.lights[k]);
+        for (const LightContribution& e : c.lights[k]) { // applyDragMask's sums with nothing blocked
+            setBit(c.lightTexels[k], e.texel);
+            c.lightSum[k] += e.white;
+            c.lightSum0[k] += e.black;
+        }
+    }
     return c;
 }
 
@@ -95,6 +107,14 @@ void applyDragMask(const PointDragCache& cache, const uint64_t* mask, const Boun
     if (cache.affine) s.lightTerms0.assign(cache.lights.size(), glm::vec3(0.0f));
     else s.lightTerms0.clear();
     for (size_t k = 0; k < cache.lights.size(); ++k) {
+        bool masked = false;
+        if (mask)
+            for (size_t w = 0; w < cache.lightTexels[k].size() && !masked; ++w) masked = (mask[w] & cache.lightTexels[k][w]) != 0;
+        if (!masked) { // the loop below would add every entry in order: its sums, bit for bit
+            s.lightTerms[k] = cache.lightSum[k];
+            if (cache.affine) s.lightTerms0[k] = cache.lightSum0[k];
+            continue;
+        }
         glm::vec3 sum(0.0f), sum0(0.0f);
         for (const LightContribution& e : cache.lights[k]) {
             if (mask && ((mask[e.texel >> 6] >> (e.texel & 63)) & 1u) && blocksEntry(e, sphere, origin, objectBvh)) {

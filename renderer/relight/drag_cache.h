@@ -33,6 +33,10 @@ struct PointDragCache {
     std::vector<float> values;  // T'(t) per visible texel: white, then black (affine)
     glm::vec3 envBase{0.0f}, envBase0{0.0f};
     std::vector<std::vector<LightContribution>> lights; // per light
+    // Per light: the texels its entries lie in, and the entries' sums in order (white, black):
+    // the light's terms wherever the mask blocks none of those texels, without the entries' walk.
+    std::vector<TexelBits> lightTexels;
+    std::vector<glm::vec3> lightSum, lightSum0;
     size_t bytes() const;
 };
 

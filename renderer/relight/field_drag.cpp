@@ -11,17 +11,19 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
-#include <ctime>
+#include <chrono>
+#include <cmath>
 
 namespace wavelit::relight {
 namespace {
 
-int64_t threadCpuNs() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return int64_t(t.tv_sec) * 1000000000 + int64_t(t.tv_nsec);
+// A worker's clock for the hit-changed points' time. Not the thread's CPU clock: that one is a
+// system call (no vDSO), and two per point were 3% of a drag step; the workers own their cores
+// during a drag, so their wall time is their CPU time.
+int64_t workerNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 bool occludedBy(const PointState& s, size_t object) {
@@ -29,6 +31,10 @@ bool occludedBy(const PointState& s, size_t object) {
         if (o.object == object) return true;
     return false;
 }
+
+// FieldDrag::approximate: 1, the terms from the field (O_j and T stale); kCarriedState, a point
+// of the moved object with its visibility carried from the drag start (carriedVisibilityState).
+constexpr uint8_t kCarriedState = 2;
 
 int64_t cellKey(const glm::vec3& offset, float cell, int dx = 0, int dy = 0, int dz = 0) {
     const int64_t x = int64_t(std::floor(offset.x / cell)) + dx, y = int64_t(std::floor(offset.y / cell)) + dy,
@@ -38,8 +44,8 @@ int64_t cellKey(const glm::vec3& offset, float cell, int dx = 0, int dy = 0, int
 
 } // namespace
 
-const TexelBits* RelightPreview::FieldDrag::nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const {
-    const TexelBits* best = nullptr;
+int64_t RelightPreview::FieldDrag::nearestOwn(const glm::vec3& offset, const glm::vec3& normal) const {
+    int64_t best = -1;
     float bestDistance = 2.0f * cell * cell; // within about one cell
     for (int dz = -1; dz <= 1; ++dz)
         for (int dy = -1; dy <= 1; ++dy)
@@ -51,7 +57,7 @@ const TexelBits* RelightPreview::FieldDrag::nearestSelf(const glm::vec3& offset,
                     const float d2 = glm::dot(d, d);
                     if (d2 < bestDistance && glm::dot(ownNormal[k], normal) > 0.9f) {
                         bestDistance = d2;
-                        best = &ownSelf[k];
+                        best = int64_t(k);
                     }
                 }
             }
@@ -81,8 +87,8 @@ ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFie
 }
 
 bool RelightPreview::fieldApproximate() const {
-    return m_field && std::find(m_field->approximate.begin(), m_field->approximate.end(), uint8_t(1)) !=
-                          m_field->approximate.end();
+    return m_field && std::any_of(m_field->approximate.begin(), m_field->approximate.end(),
+                                  [](uint8_t a) { return a != 0; });
 }
 
 const std::vector<glm::vec3>& RelightPreview::fieldEnvTexels() const {
@@ -122,16 +128,22 @@ void RelightPreview::buildDragCaches() {
     f.ownOffset.clear();
     f.ownNormal.clear();
     f.ownSelf.clear();
+    f.ownOcclusions.clear();
     f.ownGrid.clear();
-    if (!(own.convexFront && own.convexBack)) {
+    const bool convex = own.convexFront && own.convexBack;
+    const bool reuse = f.field.settings().reuseOwnStates;
+    if (!convex || reuse) {
         for (size_t i = 0; i < m_points.size(); ++i) {
             const PreviewPoint& p = m_points[i];
             if (!p.hit || p.object != f.object) continue;
-            TexelBits self = m_states[i].above;
-            for (size_t w = 0; w < self.size(); ++w) self[w] &= ~m_states[i].lit[w];
+            if (!convex) {
+                TexelBits self = m_states[i].above;
+                for (size_t w = 0; w < self.size(); ++w) self[w] &= ~m_states[i].lit[w];
+                f.ownSelf.push_back(std::move(self));
+            }
+            if (reuse) f.ownOcclusions.push_back(m_states[i].occlusions);
             f.ownOffset.push_back(rayOrigin(p) - f.centre);
             f.ownNormal.push_back(p.geometric);
-            f.ownSelf.push_back(std::move(self));
         }
         // Cells of ~2 point spacings: the points cover the visible surface about evenly.
         f.cell = std::max(1e-4f, 4.0f * own.bounds.radius / std::sqrt(float(std::max<size_t>(f.ownOffset.size(), 1))));
@@ -156,9 +168,13 @@ void RelightPreview::settleFieldDrag(bool dropField) {
     const TransferContext ctx = context();
     util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         if (!f.approximate[i]) return;
+        if (f.approximate[i] == kCarriedState) {
+            m_states[i] = buildPointState(ctx, m_points[i]);
+        } else {
+            updateOcclusion(ctx, m_points[i], m_states[i], uint32_t(f.object));
+            updateTransferAndTerms(ctx, m_points[i], m_states[i]);
+        }
         f.approximate[i] = 0;
-        updateOcclusion(ctx, m_points[i], m_states[i], uint32_t(f.object));
-        updateTransferAndTerms(ctx, m_points[i], m_states[i]);
     });
     f.caches.clear();
     f.caches.shrink_to_fit();
@@ -195,9 +211,10 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
     const bool nearest = !f.field.settings().interpolate;
     const bool ownConvex = m_occluders[j].convexFront && m_occluders[j].convexBack;
+    const bool reuseOwn = f.field.settings().reuseOwnStates;
     std::atomic<int64_t> rebuiltNs{0}; // CPU time of the rebuilt points (hit changed, or own)
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
-        reused(m_points.size(), 0);
+        reused(m_points.size(), 0), carried(m_points.size(), 0);
     util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         PreviewPoint& p = m_points[i];
         PointState& s = m_states[i];
@@ -206,11 +223,11 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         // the drag) still moved against the rest of its object: its self-visibility changed.
         const bool hitChanged = !(cast[i] == p) || (p.hit && p.object == j && !ownConvex);
         if (hitChanged) {
-            const int64_t start = threadCpuNs();
+            const int64_t start = workerNs();
             struct Charge { // the hit-changed branch's CPU time, on every way out of it
                 std::atomic<int64_t>& sum;
                 int64_t start;
-                ~Charge() { sum += threadCpuNs() - start; }
+                ~Charge() { sum += workerNs() - start; }
             } charge{rebuiltNs, start};
             p = cast[i];
             touched[i] = 1;
@@ -225,9 +242,17 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
             if (p.object == j) { // the object's own surface: its factors, self-visibility cached
                 // Its offset from the object's centre now, as the cached points' from the centre then.
                 const glm::vec3 offset = rayOrigin(p) - sphere.centre;
-                const TexelBits* self = f.ownGrid.empty() ? nullptr : f.nearestSelf(offset, p.geometric);
-                s = buildPointState(ctx, p, UINT32_MAX, self);
-                rebuilt[i] = 1;
+                const int64_t k = f.ownGrid.empty() ? -1 : f.nearestOwn(offset, p.geometric);
+                const TexelBits* self = k >= 0 && !ownConvex ? &f.ownSelf[size_t(k)] : nullptr;
+                if (k >= 0 && reuseOwn) { // no rays, no T: the nearest point's visibility carried
+                    s = carriedVisibilityState(ctx, p, self, f.ownOcclusions[size_t(k)], f.envTexels,
+                                               LobeAverage::Full);
+                    f.approximate[i] = kCarriedState;
+                    carried[i] = 1;
+                } else {
+                    s = buildPointState(ctx, p, UINT32_MAX, self);
+                    rebuilt[i] = 1;
+                }
                 reused[i] = self ? 1 : 0;
                 return;
             }
@@ -285,6 +310,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     summary.pointsRebuilt = size_t(std::count(rebuilt.begin(), rebuilt.end(), uint8_t(1)));
     summary.fieldFallbacks = size_t(std::count(fallback.begin(), fallback.end(), uint8_t(1)));
     summary.selfMasksReused = size_t(std::count(reused.begin(), reused.end(), uint8_t(1)));
+    summary.statesCarried = size_t(std::count(carried.begin(), carried.end(), uint8_t(1)));
     summary.rebuiltCpuMs = double(rebuiltNs.load()) * 1e-6;
     summary.pointsMs = timer.milliseconds();
     m_touched = std::move(touched);

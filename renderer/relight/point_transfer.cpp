@@ -316,14 +316,16 @@ void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const P
     for (const uint32_t t : values.texel) slot[t] = -1;
 }
 
+// The texels above both the geometric and the shading horizon.
+static TexelBits aboveBits(const TexelDirections& dirs, const PreviewPoint& p) {
+    return dirs.aboveBoth(p.geometric, p.shading);
+}
+
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,
                            const TexelBits* selfBlocked) {
     PointState s;
     const TexelDirections& dirs = *ctx.dirs;
-    TexelBits above = makeBits(dirs.count());
-    for (size_t t = 0; t < dirs.count(); ++t)
-        if (glm::dot(dirs.direction(t), p.geometric) > 0.0f && glm::dot(dirs.direction(t), p.shading) > 0.0f)
-            setBit(above, t);
+    TexelBits above = aboveBits(dirs, p);
     const glm::vec3 origin = rayOrigin(p);
     const ObjectOccluder& own = (*ctx.occluders)[p.object];
     const bool convex = p.backFace ? own.convexBack : own.convexFront;
@@ -336,6 +338,29 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, ui
     for (uint32_t j = 0; j < ctx.occluders->size(); ++j)
         if (j != skipObject) updateOcclusion(ctx, p, s, j);
     updateTransferAndTerms(ctx, p, s);
+    return s;
+}
+
+PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint& p, const TexelBits* selfBlocked,
+                                  const std::vector<Occlusion>& occlusions, const std::vector<glm::vec3>& envTexels,
+                                  LobeAverage average) {
+    PointState s;
+    s.above = aboveBits(*ctx.dirs, p);
+    s.lit = s.above;
+    if (selfBlocked)
+        for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~(*selfBlocked)[w];
+    for (const Occlusion& o : occlusions) {
+        Occlusion within{o.object, o.blocked};
+        bool any = false;
+        for (size_t w = 0; w < within.blocked.size(); ++w) any |= (within.blocked[w] &= s.lit[w]) != 0;
+        if (any) s.occlusions.push_back(std::move(within));
+    }
+    PointTerms terms;
+    untruncatedTerms(ctx, p, s, envTexels, terms, average);
+    s.envTerm = terms.envTerm;
+    s.envTerm0 = terms.envTerm0;
+    s.lightTerms = std::move(terms.lightTerms);
+    s.lightTerms0 = std::move(terms.lightTerms0);
     return s;
 }
 

@@ -155,6 +155,16 @@ void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const P
                       const std::vector<glm::vec3>& envTexels, PointTerms& out,
                       LobeAverage average);
 
+// A point's state without rays and without T (the shadow-field drag's moved object,
+// relight_preview.h): its horizon from its own normals, its self-visibility `selfBlocked` (null:
+// none, a convex object) and the other objects' `occlusions` carried from another point (both
+// masked by the horizon), and its terms untruncatedTerms' with its own BRDF and view direction.
+// T is left empty: such a state is an approximation to be rebuilt (buildPointState) before any
+// edit that reads T.
+PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint& p, const TexelBits* selfBlocked,
+                                  const std::vector<Occlusion>& occlusions, const std::vector<glm::vec3>& envTexels,
+                                  LobeAverage average);
+
 // T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
 // values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF
 // (else empty). For the shadow field's drag cache (drag_cache.h).

@@ -64,8 +64,11 @@ struct EditSummary {
     // Of the rebuilt points on a non-convex moved object: those whose self-visibility came from
     // the drag start's own-surface cache (the nearest cached point's mask) instead of rays.
     size_t selfMasksReused = 0;
+    // With ShadowFieldSettings::reuseOwnStates: the moved object's points whose visibility was
+    // carried from the drag start's nearest point of it (no rays, no T; not in pointsRebuilt).
+    size_t statesCarried = 0;
     double cacheMs = 0.0;
-    double rebuiltCpuMs = 0.0; // CPU time (all workers) of the points whose camera hit changed
+    double rebuiltCpuMs = 0.0; // time of the points whose camera hit changed, summed over workers
 };
 
 // What enableShadowField built: the field (time, bytes) and the per-point drag caches.
@@ -194,9 +197,11 @@ private:
         glm::vec3 centre{0.0f};
         float cell = 1.0f;
         std::vector<glm::vec3> ownOffset, ownNormal;
-        std::vector<TexelBits> ownSelf;
+        std::vector<TexelBits> ownSelf;                    // non-convex objects only
+        std::vector<std::vector<Occlusion>> ownOcclusions; // by the other objects (reuseOwnStates)
         std::unordered_map<int64_t, std::vector<uint32_t>> ownGrid;
-        const TexelBits* nearestSelf(const glm::vec3& offset, const glm::vec3& normal) const;
+        // The nearest cached own point on the same side, or -1.
+        int64_t nearestOwn(const glm::vec3& offset, const glm::vec3& normal) const;
     };
     std::unique_ptr<FieldDrag> m_field;
     bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;

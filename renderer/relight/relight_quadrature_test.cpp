@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace wavelit::relight {
 namespace {
@@ -160,6 +161,30 @@ TEST(RelightTexels, TexelOfFindsEveryTexelCentre) {
     for (int level : {3, 5, 6}) {
         const TexelDirections dirs(level);
         for (size_t t = 0; t < dirs.count(); ++t) ASSERT_EQ(dirs.texelOf(dirs.direction(t)), t) << level;
+    }
+}
+
+// aboveBoth is the per-texel test it replaced (glm::dot > 0 against both normals), bit for bit,
+// at every level (level 1's 4 texels are one padded word), for random and axis-aligned normals
+// (texel centres on a great circle through an axis give dot products of exactly 0).
+TEST(RelightTexels, AboveBothIsThePerTexelHorizonTest) {
+    std::mt19937 rng(5);
+    std::normal_distribution<float> gauss;
+    for (int level : {1, 3, 5, 6}) {
+        const TexelDirections dirs(level);
+        std::vector<glm::vec3> normals = {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}};
+        for (int k = 0; k < 40; ++k) normals.push_back(glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))));
+        size_t set = 0;
+        for (size_t i = 0; i + 1 < normals.size(); ++i) {
+            const glm::vec3 a = normals[i], b = glm::normalize(normals[i] + 0.5f * normals[i + 1]);
+            const TexelBits got = dirs.aboveBoth(a, b);
+            TexelBits want = makeBits(dirs.count());
+            for (size_t t = 0; t < dirs.count(); ++t)
+                if (glm::dot(dirs.direction(t), a) > 0.0f && glm::dot(dirs.direction(t), b) > 0.0f) setBit(want, t);
+            ASSERT_EQ(got, want) << level << " " << i;
+            for (uint64_t w : got) set += size_t(__builtin_popcountll(w));
+        }
+        EXPECT_GT(set, dirs.count()); // not trivially empty
     }
 }
 

@@ -32,6 +32,11 @@ struct ShadowFieldSettings {
     float innerRatio = 0.25f; // innermost shell radius / bounding radius
     float outerRatio = 24.0f; // outermost shell radius / bounding radius
     bool interpolate = true;  // blend() the 8 samples about a point; false: the nearest (lookup)
+    // The drag's use of the field (relight_preview.h enableShadowField), not the field itself:
+    // the points on the moved object take their visibility from the drag start's nearest point of
+    // it (self and other objects' occlusion) and their terms untruncated with their own BRDF,
+    // instead of rays and a new T.
+    bool reuseOwnStates = false;
 };
 
 class ShadowField {

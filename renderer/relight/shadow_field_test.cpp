@@ -255,5 +255,75 @@ TEST(RelightShadowField, NonConvexObjectReusesItsOwnSelfVisibility) {
                 own, selfShadowed, summary.selfMasksReused, mismatched, texels, unshadowedWrong, relRmse);
 }
 
+
+// (5) With reuseOwnStates the moved object's points take their visibility (self and the other
+// objects' occlusion) from the drag start's nearest point of it, with no rays and no T, and their
+// terms untruncated with their own BRDF and view direction (carriedVisibilityState). Against the
+// exact drag their terms stay close; the first other edit rebuilds them, and the preview is
+// create()'s on the edited scene again, T included.
+TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
+    scene::Scene scene = testing::makeRelightScene();
+    scene.objects[kBox].mesh = stepMesh(0.25f);
+    scene.objects[kBox].transform.translation = {-0.1f, 0.25f, 0.0f};
+    RelightSettings settings = testing::smallSettings();
+    settings.width = 128;
+    settings.height = 96;
+    // Every coefficient kept: the carried terms are untruncated, so T's truncation would
+    // otherwise be most of their difference from the exact drag.
+    settings.keep = size_t(1) << (2 * settings.level);
+    auto carried = RelightPreview::create(scene, settings);
+    auto exact = RelightPreview::create(scene, settings);
+    ASSERT_TRUE(carried && exact);
+    ShadowFieldSettings field;
+    field.reuseOwnStates = true;
+    (*carried)->enableShadowField(kBox, field);
+    scene::Scene exactScene = scene;
+    EditSummary summary;
+    for (const glm::vec3& to : {glm::vec3(-0.08f, 0.25f, 0.02f), glm::vec3(-0.06f, 0.25f, 0.03f)}) {
+        summary = move(**carried, scene, to);
+        move(**exact, exactScene, to);
+    }
+    EXPECT_EQ(summary.method, "shadowField");
+    EXPECT_TRUE((*carried)->fieldApproximate());
+
+    size_t own = 0, withoutT = 0;
+    double sumSq = 0.0, sumRef = 0.0;
+    for (size_t i = 0; i < (*exact)->points().size(); ++i) {
+        const PreviewPoint& p = (*exact)->points()[i];
+        if (!p.hit || p.object != kBox) continue;
+        ASSERT_TRUE((*carried)->points()[i] == p) << i;
+        const PointState& a = (*carried)->states()[i];
+        const PointState& b = (*exact)->states()[i];
+        ++own;
+        withoutT += a.transfer.index.empty() ? 1 : 0;
+        for (const auto& [got, ref] : {std::pair{a.envTerm, b.envTerm}, std::pair{a.lightTerms.at(0), b.lightTerms.at(0)}}) {
+            sumSq += double(glm::dot(got - ref, got - ref));
+            sumRef += double(ref.x + ref.y + ref.z) / 3.0;
+        }
+    }
+    ASSERT_GT(own, 50u);
+    // Every own point of a 2-step drag is carried but those with no cached point near them.
+    EXPECT_EQ(summary.statesCarried, withoutT);
+    EXPECT_GT(summary.statesCarried, own * 9 / 10);
+    EXPECT_LT(summary.pointsRebuilt, own / 10);
+    const double relRmse = std::sqrt(sumSq / double(2 * own * 3)) / (sumRef / double(2 * own));
+    EXPECT_LT(relRmse, 0.05);
+    std::printf("own points %zu, carried %zu, rebuilt %zu; own terms relRMSE %.4f against the exact drag\n", own,
+                summary.statesCarried, summary.pointsRebuilt, relRmse);
+
+    scene::ChangeSet env;
+    ASSERT_TRUE(env.setProperty(scene, {scene::EntityKind::Environment, scene::kInvalidId}, "intensity", 1.5f));
+    ASSERT_TRUE(env.apply(scene));
+    EXPECT_TRUE((*carried)->applyChanges(scene, env).method.empty());
+    EXPECT_FALSE((*carried)->fieldApproximate());
+    auto scratch = RelightPreview::create(scene, settings);
+    ASSERT_TRUE(scratch);
+    EXPECT_LE(maxRelImageDiff((*carried)->image(), (*scratch)->image()), 1e-6);
+    for (size_t i = 0; i < (*scratch)->states().size(); ++i) {
+        EXPECT_EQ((*carried)->states()[i].transfer.index, (*scratch)->states()[i].transfer.index) << i;
+        EXPECT_EQ((*carried)->states()[i].transfer.value, (*scratch)->states()[i].transfer.value) << i;
+    }
+}
+
 } // namespace
 } // namespace wavelit::relight

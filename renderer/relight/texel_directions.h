@@ -46,6 +46,10 @@ public:
     const float* coarseSubZ(size_t texel) const {
         return &m_coarseZ[texel * kCoarseSub * kCoarseSub];
     }
+    // Bit t set where direction(t) . a > 0 and direction(t) . b > 0 (TexelBits words; the same
+    // float products and sums as glm::dot): a point's horizon, computed for every point the
+    // preview builds or a drag carries, one word at a time from the directions' components.
+    std::vector<uint64_t> aboveBoth(const glm::vec3& a, const glm::vec3& b) const;
     // The texel holding direction d (any non-zero vector).
     uint32_t texelOf(const glm::vec3& d) const;
     // The same for a unit vector, inline: a rect light's drag maps ~30 samples per point through
@@ -56,6 +60,7 @@ private:
     int m_level;
     std::vector<glm::vec3> m_dirs;
     std::vector<float> m_subX, m_subY, m_subZ, m_coarseX, m_coarseY, m_coarseZ;
+    std::vector<float> m_x, m_y, m_z; // m_dirs' components, padded with zeros to whole words
     double m_texelSolidAngle;
     double m_texelRadius;
 };

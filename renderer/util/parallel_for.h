@@ -1,13 +1,15 @@
 // Runs body over [0, count) on `threads` std::threads (the caller's thread is worker 0), in
-// interleaved blocks of 64 items: work whose cost varies across the range (a shadow region in one
-// corner of a preview, the poles of an env map) spreads over the workers better than with one
-// block each. Which worker runs an item depends only on its index and the worker count, and
-// every item is run exactly once, so results that do not depend on the order of the items are
+// blocks of 64 items: work whose cost varies across the range (a shadow region in one corner of
+// a preview, the poles of an env map) spreads over the workers better than with one block each.
+// Every item is run exactly once, so results that do not depend on the order of the items are
 // the same whatever the thread count (the relight preview and the sampler tables are compared
-// bit for bit between thread counts).
+// bit for bit between thread counts). parallelForWorkers interleaves the blocks by index (which
+// worker runs an item depends only on its index and the worker count: per-worker scratch);
+// parallelFor hands them to whichever worker is free.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <thread>
 #include <vector>
@@ -43,9 +45,25 @@ template <typename F> void parallelForWorkers(size_t count, int threads, F&& bod
     for (std::thread& t : pool) t.join();
 }
 
-// body(item).
+// body(item), the blocks handed out in order to whichever worker is free: the item's cost may
+// cluster (a moved object's own pixels, a few rows of a preview), and a fixed interleave gave one
+// of two workers up to a third more of a drag step's work than the other. Which thread runs an
+// item is not fixed, so body must not keep state across items (per item results are the same).
 template <typename F> void parallelFor(size_t count, int threads, F&& body) {
-    parallelForWorkers(count, threads, [&](size_t, size_t i) { body(i); });
+    const size_t workers = parallelWorkers(count, threads);
+    if (workers <= 1) {
+        for (size_t i = 0; i < count; ++i) body(i);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    auto run = [&] {
+        for (size_t start = next.fetch_add(kParallelBlock); start < count; start = next.fetch_add(kParallelBlock))
+            for (size_t i = start, end = std::min(count, start + kParallelBlock); i < end; ++i) body(i);
+    };
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back(run);
+    run();
+    for (std::thread& t : pool) t.join();
 }
 
 } // namespace wavelit::util
