@@ -280,9 +280,9 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
                 unionBits[w] = any; // not only visible': a light's shadow-ray entries read it too
                 for (uint64_t bits = unionBits[w]; bits; bits &= bits - 1) {
                     const size_t b = size_t(__builtin_ctzll(bits));
-                    float sum = 0.0f;
+                    float sum = 0.0f; // the same additions in order; a bit selects, not branches
                     for (int k = 0; k < blend.count; ++k)
-                        if ((blend.masks[k][w] >> b) & 1u) sum += blend.weights[k];
+                        sum += ((blend.masks[k][w] >> b) & 1u) ? blend.weights[k] : 0.0f;
                     weight[w * 64 + b] = std::min(sum, 1.0f);
                 }
             }
