@@ -17,7 +17,8 @@
 #     binary's corrected first answer (firstCpuMs, firstMs, its relRMSE against the exact preview)
 #     next to the before binary's coarse answer (coarseMs) and full update. SCENES="a b" runs a
 #     subset; LISTS=DIR takes DIR/SCENE.edits.json instead of the lists below; AFTER_ARGS adds
-#     flags to the after binary's runs (a report's fieldVsExactRelRMSE is then listed per step).
+#     flags to the after binary's runs (a report's fieldVsExactRelRMSE is then listed per step),
+#     BEFORE_ARGS to the before binary's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" == --ab ]]; then
@@ -27,6 +28,7 @@ if [[ "${1:-}" == --ab ]]; then
     out=out/relight-ab
     scenes=(${SCENES:-ring_on_ground cornell_box glossy_sphere})
     afterArgs=(${AFTER_ARGS:-})
+    beforeArgs=(${BEFORE_ARGS:-})
     mkdir -p "$out"
     cat > "$out/ring_on_ground.edits.json" <<'JSON'
 [{"entity": "environment", "property": "rotation", "value": 90},
@@ -62,7 +64,7 @@ JSON
         [[ $s == glossy_sphere ]] && level=6
         for r in $(seq "$runs"); do
             for v in before after; do
-                cli=$before extra=()
+                cli=$before extra=("${beforeArgs[@]}")
                 [[ $v == after ]] && cli=$after extra=("${afterArgs[@]}")
                 echo "relight bench --ab: $s $v run $r"
                 "$cli" relight "resources/scenes/$s.wlscene" --edits "$out/$s.edits.json" --out "$out/$s-$v" \

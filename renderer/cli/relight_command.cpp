@@ -26,10 +26,13 @@
 // --shadow-field: translation drags of the first object the list translates go through its
 // shadow field (relight/shadow_field.h, docs/relighting.md §7.0e; --field-shells N,
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
-// the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend)): the report's "shadowField" block says what the field and the per-point
-// caches cost, and each edit's "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks,
-// selfMasksReused and cacheMs; --field-check also keeps an exact preview beside it and reports each edit's
-// fieldVsExactRelRMSE (the field's image against the exact, ray-cast one).
+// the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend),
+// --field-carry-own (the moved object's own points carry their visibility from the drag start's
+// nearest point of it: ShadowFieldSettings::reuseOwnStates, §7.0j)): the report's "shadowField"
+// block says what the field and the per-point caches cost, and each edit's "method" ("shadowField"
+// or "exact"), pointsRebuilt, fieldFallbacks, selfMasksReused, statesCarried and cacheMs;
+// --field-check also keeps an exact preview beside it and reports each edit's fieldVsExactRelRMSE
+// (the field's image against the exact, ray-cast one).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.
 #include "cli/args.h"
 #include "cli/commands.h"

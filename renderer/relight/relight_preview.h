@@ -102,7 +102,10 @@ public:
     // and summary.method says "shadowField"; the first other edit first restores the exact state
     // (the points the field updated re-cast O_j and rebuild T: equal to create() again), and
     // drops the caches (rebuilt at the next translation); a rotation, scale or mesh edit of the
-    // object, or a structural one, drops the field (its masks live in world axes).
+    // object, or a structural one, drops the field (its masks live in world axes). With
+    // settings.reuseOwnStates the object's own points rebuilt by the drag carry their visibility
+    // from the drag start's nearest point of it instead (carriedVisibilityState: no rays, no T;
+    // summary.statesCarried), and the first other edit rebuilds them whole (§7.0j).
     ShadowFieldInfo enableShadowField(size_t object, const ShadowFieldSettings& settings = {});
     bool fieldApproximate() const; // some point's terms come from the field
     // Per point: whether the last applyChanges did any work on it.
