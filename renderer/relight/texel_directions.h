@@ -50,6 +50,11 @@ public:
     // float products and sums as glm::dot): a point's horizon, computed for every point the
     // preview builds or a drag carries, one word at a time from the directions' components.
     std::vector<uint64_t> aboveBoth(const glm::vec3& a, const glm::vec3& b) const;
+    // direction(t)'s components as arrays (padded with zeros to whole 64-texel words).
+    const float* xs() const { return m_x.data(); }
+    const float* ys() const { return m_y.data(); }
+    const float* zs() const { return m_z.data(); }
+    size_t paddedCount() const { return m_x.size(); }
     // The texel holding direction d (any non-zero vector).
     uint32_t texelOf(const glm::vec3& d) const;
     // The same for a unit vector, inline: a rect light's drag maps ~30 samples per point through

@@ -27,11 +27,11 @@ inline bool blockedByOthers(const PointState& s, size_t texel) {
 
 // visit(t) for every visible texel t (lit, no other object in the way), walking the lit bits.
 template <class Visit> void forEachVisibleTexel(const PointState& s, Visit&& visit) {
-    for (size_t w = 0; w < s.lit.size(); ++w)
-        for (uint64_t bits = s.lit[w]; bits; bits &= bits - 1) {
-            const size_t t = w * 64 + size_t(__builtin_ctzll(bits));
-            if (!blockedByOthers(s, t)) visit(t);
-        }
+    for (size_t w = 0; w < s.lit.size(); ++w) {
+        uint64_t visibleBits = s.lit[w]; // one word of every occlusion, not one test per texel
+        for (const Occlusion& o : s.occlusions) visibleBits &= ~o.blocked[w];
+        for (uint64_t bits = visibleBits; bits; bits &= bits - 1) visit(w * 64 + size_t(__builtin_ctzll(bits)));
+    }
 }
 
 // The visible texels of a point, ascending, with f x cosine at each: `white` for the material's
