@@ -212,7 +212,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     const bool nearest = !f.field.settings().interpolate;
     const bool ownConvex = m_occluders[j].convexFront && m_occluders[j].convexBack;
     const bool reuseOwn = f.field.settings().reuseOwnStates;
-    std::atomic<int64_t> rebuiltNs{0}; // CPU time of the rebuilt points (hit changed, or own)
+    std::atomic<int64_t> rebuiltNs{0}; // time of the rebuilt points (hit changed, or own)
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
         reused(m_points.size(), 0), carried(m_points.size(), 0);
     util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
@@ -224,7 +224,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         const bool hitChanged = !(cast[i] == p) || (p.hit && p.object == j && !ownConvex);
         if (hitChanged) {
             const int64_t start = workerNs();
-            struct Charge { // the hit-changed branch's CPU time, on every way out of it
+            struct Charge { // the hit-changed branch's time, on every way out of it
                 std::atomic<int64_t>& sum;
                 int64_t start;
                 ~Charge() { sum += workerNs() - start; }

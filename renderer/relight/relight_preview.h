@@ -196,7 +196,8 @@ private:
         // The object's own surface points at the drag's start, in its frame (offset from its
         // bounding centre then), with the texels the object blocks for them (above & ~lit):
         // self-visibility is translation-invariant, so a point the drag brings into view takes
-        // the nearest one's instead of its rays (non-convex objects only; an approximation).
+        // the nearest one's instead of its rays (non-convex objects only; an approximation); with
+        // reuseOwnStates also the other objects' occlusion of each (convex objects too).
         glm::vec3 centre{0.0f};
         float cell = 1.0f;
         std::vector<glm::vec3> ownOffset, ownNormal;

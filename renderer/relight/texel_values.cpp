@@ -150,8 +150,8 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
     dirs.reserve(gridTexels, gridTexels * (m.narrow ? kCount : 1));
     out.texel.resize(gridTexels);
     // Every texel's centre in the point's frame at once (vectorised; the same products and sums as
-    // Frame::toLocal), read below at the visible ones: per texel the transform was a third of
-    // this function.
+    // Frame::toLocal), read below at the visible ones, instead of one scalar transform per
+    // visible texel (docs/relighting.md §7.0j).
     thread_local std::vector<float> localX, localY, localZ;
     localX.resize(grid.paddedCount());
     localY.resize(grid.paddedCount());
