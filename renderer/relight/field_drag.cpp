@@ -278,12 +278,17 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
                 uint64_t any = 0;
                 for (int k = 0; k < blend.count; ++k) any |= blend.masks[k][w];
                 unionBits[w] = any; // not only visible': a light's shadow-ray entries read it too
-                for (uint64_t bits = unionBits[w]; bits; bits &= bits - 1) {
-                    const size_t b = size_t(__builtin_ctzll(bits));
-                    float sum = 0.0f; // the same additions in order; a bit selects, not branches
-                    for (int k = 0; k < blend.count; ++k)
-                        sum += ((blend.masks[k][w] >> b) & 1u) ? blend.weights[k] : 0.0f;
-                    weight[w * 64 + b] = std::min(sum, 1.0f);
+                float* at = &weight[w * 64];
+                for (uint64_t bits = any; bits; bits &= bits - 1) at[__builtin_ctzll(bits)] = 0.0f;
+                // Sample by sample, so each texel's sum takes the samples in order (as summing
+                // per texel would) while the texels' additions overlap.
+                for (int k = 0; k < blend.count; ++k) {
+                    const float wk = blend.weights[k];
+                    for (uint64_t bits = blend.masks[k][w]; bits; bits &= bits - 1) at[__builtin_ctzll(bits)] += wk;
+                }
+                for (uint64_t bits = any; bits; bits &= bits - 1) {
+                    float& v = at[__builtin_ctzll(bits)];
+                    v = std::min(v, 1.0f);
                 }
             }
             mask = unionBits.data();
