@@ -26,23 +26,26 @@ inline size_t parallelWorkers(size_t count, int threads) {
     return std::max<size_t>(1, std::min<size_t>(size_t(std::max(threads, 1)), blocks));
 }
 
+// `threads`, or every hardware thread (at least 1) for threads <= 0.
+inline int threadsOrHardware(int threads) {
+    return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// run(worker) for worker in [0, workers): the caller's thread is worker 0, the others are new.
+template <typename Run> void runOnWorkers(size_t workers, Run&& run) {
+    std::vector<std::thread> pool;
+    for (size_t w = 1; w < workers; ++w) pool.emplace_back([&run, w] { run(w); });
+    run(size_t(0));
+    for (std::thread& t : pool) t.join();
+}
+
 // body(worker, item), worker in [0, parallelWorkers(count, threads)): for per-worker scratch.
 template <typename F> void parallelForWorkers(size_t count, int threads, F&& body) {
     const size_t workers = parallelWorkers(count, threads);
-    constexpr size_t kBlock = kParallelBlock;
-    auto run = [&](size_t worker) {
-        for (size_t start = worker * kBlock; start < count; start += workers * kBlock)
-            for (size_t i = start, end = std::min(count, start + kBlock); i < end; ++i)
-                body(worker, i);
-    };
-    if (workers <= 1) {
-        run(0);
-        return;
-    }
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(run, w);
-    run(0);
-    for (std::thread& t : pool) t.join();
+    runOnWorkers(workers, [&](size_t worker) {
+        for (size_t start = worker * kParallelBlock; start < count; start += workers * kParallelBlock)
+            for (size_t i = start, end = std::min(count, start + kParallelBlock); i < end; ++i) body(worker, i);
+    });
 }
 
 // body(item), the blocks handed out in order to whichever worker is free: the item's cost may
@@ -50,20 +53,11 @@ template <typename F> void parallelForWorkers(size_t count, int threads, F&& bod
 // of two workers up to a third more of a drag step's work than the other. Which thread runs an
 // item is not fixed, so body must not keep state across items (per item results are the same).
 template <typename F> void parallelFor(size_t count, int threads, F&& body) {
-    const size_t workers = parallelWorkers(count, threads);
-    if (workers <= 1) {
-        for (size_t i = 0; i < count; ++i) body(i);
-        return;
-    }
     std::atomic<size_t> next{0};
-    auto run = [&] {
+    runOnWorkers(parallelWorkers(count, threads), [&](size_t) {
         for (size_t start = next.fetch_add(kParallelBlock); start < count; start = next.fetch_add(kParallelBlock))
             for (size_t i = start, end = std::min(count, start + kParallelBlock); i < end; ++i) body(i);
-    };
-    std::vector<std::thread> pool;
-    for (size_t w = 1; w < workers; ++w) pool.emplace_back(run);
-    run();
-    for (std::thread& t : pool) t.join();
+    });
 }
 
 } // namespace wavelit::util

@@ -4,6 +4,7 @@
 #include "render/sampling/sampler_constants.h"
 #include "render/session/integrator_factory.h"
 #include "util/hemisphere_sampling.h"
+#include "util/parallel_for.h"
 #include "util/rng.h"
 #include "util/timer.h"
 
@@ -14,7 +15,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 namespace wavelit::render {
 namespace {
@@ -48,7 +48,7 @@ CpuPathTracer::create(std::shared_ptr<const scene::Scene> scene,
     if (!tables)
         return tables.error();
     setSamplerIndices(*materials, tables->samplerIndexOfMaterial);
-    if (threadCount <= 0) threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
+    threadCount = util::threadsOrHardware(threadCount);
     std::unique_ptr<CpuPathTracer> tracer(new CpuPathTracer(
         std::move(scene), std::move(bvh), options, std::move(materials.value()), threadCount));
     tracer->m_samplerCache = std::move(cache);
@@ -306,12 +306,8 @@ util::Status CpuPathTracer::renderPass() {
                 }
         }
     };
-    const int n = std::min(m_threadCount, tiles);
-    std::vector<std::thread> threads;
-    threads.reserve(size_t(std::max(0, n - 1)));
-    for (int i = 1; i < n; ++i) threads.emplace_back(worker);
-    worker(); // the calling thread is worker 0
-    for (std::thread& t : threads) t.join();
+    // The calling thread is worker 0.
+    util::runOnWorkers(size_t(std::max(1, std::min(m_threadCount, tiles))), [&](size_t) { worker(); });
     m_cameraNeeReady = true; // built, or not used by this render
     ++m_passes;
     m_timings.passSeconds += timer.seconds();

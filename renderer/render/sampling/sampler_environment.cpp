@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <thread>
 #include <vector>
 
 namespace wavelit::render {
@@ -129,8 +128,7 @@ SamplerEnvironment SamplerEnvironment::build(const scene::Environment& env,
         unrotatedEnv.rotationDeg = 0.0f;
         const CpuEnvironment unrotated(unrotatedEnv);
         const int side = grid.size();
-        const int threads = options.threads > 0 ? options.threads
-                                                : int(std::max(1u, std::thread::hardware_concurrency()));
+        const int threads = util::threadsOrHardware(options.threads);
         // Rows in parallel: each texel is its own lookups' max, whoever computes it.
         util::parallelFor(size_t(side), threads, [&](size_t row) {
             const int y = int(row);
