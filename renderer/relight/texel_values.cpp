@@ -32,23 +32,12 @@ struct DirectionBatch {
     }
 };
 
-// toLocal of one texel's Count sub-directions into the batch's arrays: lane by lane the same
-// products and sums as toLocal (no FMA without -march), written so the compiler vectorises them
-// (restrict parameters; §7.0f: restrict on local pointers is ignored).
-template <int Count>
-void subDirectionsToLocal(const util::Frame& f, const float* __restrict sx, const float* __restrict sy,
-                          const float* __restrict sz, float* __restrict x, float* __restrict y,
-                          float* __restrict z) {
-    for (int k = 0; k < Count; ++k) {
-        x[k] = f.t.x * sx[k] + f.t.y * sy[k] + f.t.z * sz[k];
-        y[k] = f.b.x * sx[k] + f.b.y * sy[k] + f.b.z * sz[k];
-        z[k] = f.n.x * sx[k] + f.n.y * sy[k] + f.n.z * sz[k];
-    }
-}
-
-// Frame::toLocal of n directions given as arrays (written so the compiler vectorises it).
-void centresToLocal(const util::Frame& f, size_t n, const float* __restrict sx, const float* __restrict sy,
-                    const float* __restrict sz, float* __restrict x, float* __restrict y, float* __restrict z) {
+// Frame::toLocal of n directions given as arrays (a texel's sub-directions, or every texel
+// centre of the grid): lane by lane the same products and sums as toLocal (no FMA without
+// -march), written so the compiler vectorises them (restrict parameters; §7.0f: restrict on
+// local pointers is ignored).
+void directionsToLocal(const util::Frame& f, size_t n, const float* __restrict sx, const float* __restrict sy,
+                       const float* __restrict sz, float* __restrict x, float* __restrict y, float* __restrict z) {
     for (size_t k = 0; k < n; ++k) {
         x[k] = f.t.x * sx[k] + f.t.y * sy[k] + f.t.z * sz[k];
         y[k] = f.b.x * sx[k] + f.b.y * sy[k] + f.b.z * sz[k];
@@ -156,7 +145,7 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
     localX.resize(grid.paddedCount());
     localY.resize(grid.paddedCount());
     localZ.resize(grid.paddedCount());
-    centresToLocal(frame, grid.paddedCount(), grid.xs(), grid.ys(), grid.zs(), localX.data(), localY.data(),
+    directionsToLocal(frame, grid.paddedCount(), grid.xs(), grid.ys(), grid.zs(), localX.data(), localY.data(),
                    localZ.data());
     size_t texels = 0;
     forEachVisibleTexel(s, [&](size_t t) {
@@ -166,12 +155,11 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
             const size_t at = dirs.size;
             if constexpr (kFull)
-                subDirectionsToLocal<kCount>(frame, grid.subX(t), grid.subY(t), grid.subZ(t),
-                                             &dirs.x[at], &dirs.y[at], &dirs.z[at]);
+                directionsToLocal(frame, kCount, grid.subX(t), grid.subY(t), grid.subZ(t), &dirs.x[at],
+                                  &dirs.y[at], &dirs.z[at]);
             else
-                subDirectionsToLocal<kCount>(frame, grid.coarseSubX(t), grid.coarseSubY(t),
-                                             grid.coarseSubZ(t), &dirs.x[at], &dirs.y[at],
-                                             &dirs.z[at]);
+                directionsToLocal(frame, kCount, grid.coarseSubX(t), grid.coarseSubY(t), grid.coarseSubZ(t),
+                                  &dirs.x[at], &dirs.y[at], &dirs.z[at]);
             dirs.size += kCount;
         } else {
             dirs.push(local);
