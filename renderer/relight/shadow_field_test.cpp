@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 namespace wavelit::relight {
 namespace {
@@ -195,6 +196,34 @@ std::shared_ptr<scene::TriangleMesh> stepMesh(float h) {
     return m;
 }
 
+// makeRelightScene with the box made the step (non-convex), resting on the ground, and the
+// preview settings both step tests use (enough points on the step to measure its terms).
+scene::Scene stepScene() {
+    scene::Scene scene = testing::makeRelightScene();
+    scene.objects[kBox].mesh = stepMesh(0.25f);
+    scene.objects[kBox].transform.translation = {-0.1f, 0.25f, 0.0f};
+    return scene;
+}
+
+RelightSettings stepSettings() {
+    RelightSettings settings = testing::smallSettings();
+    settings.width = 128;
+    settings.height = 96;
+    return settings;
+}
+
+// The points of `exact` on the box, which `other` (the same scene by another path) must hit
+// identically: the points whose states the step tests compare.
+void boxPoints(const RelightPreview& other, const RelightPreview& exact, std::vector<size_t>& out) {
+    out.clear();
+    for (size_t i = 0; i < exact.points().size(); ++i) {
+        const PreviewPoint& p = exact.points()[i];
+        if (!p.hit || p.object != kBox) continue;
+        ASSERT_TRUE(other.points()[i] == p) << i;
+        out.push_back(i);
+    }
+}
+
 // (4) A non-convex moved object: every point of it (also where the camera hit stays put, on a
 // face parallel to the drag) takes its self-visibility from the drag start's own-surface cache
 // (field_drag.cpp nearestSelf: the nearest cached point on the same side) instead of rays. Self-visibility is translation-
@@ -202,12 +231,8 @@ std::shared_ptr<scene::TriangleMesh> stepMesh(float h) {
 // exact drag it keeps nearly every texel and the terms close, where dropping self-shadowing
 // altogether (every texel above the horizon lit) would not.
 TEST(RelightShadowField, NonConvexObjectReusesItsOwnSelfVisibility) {
-    scene::Scene scene = testing::makeRelightScene();
-    scene.objects[kBox].mesh = stepMesh(0.25f);
-    scene.objects[kBox].transform.translation = {-0.1f, 0.25f, 0.0f};
-    RelightSettings settings = testing::smallSettings();
-    settings.width = 128;
-    settings.height = 96;
+    scene::Scene scene = stepScene();
+    const RelightSettings settings = stepSettings();
     auto fielded = RelightPreview::create(scene, settings);
     auto exact = RelightPreview::create(scene, settings);
     ASSERT_TRUE(fielded && exact);
@@ -222,15 +247,14 @@ TEST(RelightShadowField, NonConvexObjectReusesItsOwnSelfVisibility) {
     EXPECT_GT(summary.selfMasksReused, 10u);
     EXPECT_LE(summary.selfMasksReused, summary.pointsRebuilt);
 
-    size_t own = 0, selfShadowed = 0, texels = 0, mismatched = 0, unshadowedWrong = 0;
+    std::vector<size_t> box;
+    ASSERT_NO_FATAL_FAILURE(boxPoints(**fielded, **exact, box));
+    const size_t own = box.size();
+    size_t selfShadowed = 0, texels = 0, mismatched = 0, unshadowedWrong = 0;
     double sumSq = 0.0, sumRef = 0.0;
-    for (size_t i = 0; i < (*exact)->points().size(); ++i) {
-        const PreviewPoint& p = (*exact)->points()[i];
-        if (!p.hit || p.object != kBox) continue;
-        ASSERT_TRUE((*fielded)->points()[i] == p) << i;
+    for (size_t i : box) {
         const PointState& a = (*fielded)->states()[i];
         const PointState& b = (*exact)->states()[i];
-        ++own;
         for (size_t w = 0; w < b.above.size(); ++w) {
             const uint64_t selfB = b.above[w] & ~b.lit[w], selfA = a.above[w] & ~a.lit[w];
             texels += size_t(__builtin_popcountll(b.above[w]));
@@ -255,19 +279,14 @@ TEST(RelightShadowField, NonConvexObjectReusesItsOwnSelfVisibility) {
                 own, selfShadowed, summary.selfMasksReused, mismatched, texels, unshadowedWrong, relRmse);
 }
 
-
 // (5) With reuseOwnStates the moved object's points take their visibility (self and the other
 // objects' occlusion) from the drag start's nearest point of it, with no rays and no T, and their
 // terms untruncated with their own BRDF and view direction (carriedVisibilityState). Against the
 // exact drag their terms stay close; the first other edit rebuilds them, and the preview is
 // create()'s on the edited scene again, T included.
 TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
-    scene::Scene scene = testing::makeRelightScene();
-    scene.objects[kBox].mesh = stepMesh(0.25f);
-    scene.objects[kBox].transform.translation = {-0.1f, 0.25f, 0.0f};
-    RelightSettings settings = testing::smallSettings();
-    settings.width = 128;
-    settings.height = 96;
+    scene::Scene scene = stepScene();
+    RelightSettings settings = stepSettings();
     // Every coefficient kept: the carried terms are untruncated, so T's truncation would
     // otherwise be most of their difference from the exact drag.
     settings.keep = size_t(1) << (2 * settings.level);
@@ -286,15 +305,14 @@ TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
     EXPECT_EQ(summary.method, "shadowField");
     EXPECT_TRUE((*carried)->fieldApproximate());
 
-    size_t own = 0, withoutT = 0;
+    std::vector<size_t> box;
+    ASSERT_NO_FATAL_FAILURE(boxPoints(**carried, **exact, box));
+    const size_t own = box.size();
+    size_t withoutT = 0;
     double sumSq = 0.0, sumRef = 0.0;
-    for (size_t i = 0; i < (*exact)->points().size(); ++i) {
-        const PreviewPoint& p = (*exact)->points()[i];
-        if (!p.hit || p.object != kBox) continue;
-        ASSERT_TRUE((*carried)->points()[i] == p) << i;
+    for (size_t i : box) {
         const PointState& a = (*carried)->states()[i];
         const PointState& b = (*exact)->states()[i];
-        ++own;
         withoutT += a.transfer.index.empty() ? 1 : 0;
         for (const auto& [got, ref] : {std::pair{a.envTerm, b.envTerm}, std::pair{a.lightTerms.at(0), b.lightTerms.at(0)}}) {
             sumSq += double(glm::dot(got - ref, got - ref));
