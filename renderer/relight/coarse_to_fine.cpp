@@ -3,6 +3,8 @@
 #include "util/timer.h"
 
 #include <algorithm>
+#include <chrono>
+#include <variant>
 
 namespace wavelit::relight {
 
@@ -33,9 +35,60 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
     return out;
 }
 
+CoarseToFinePreview::~CoarseToFinePreview() {
+    if (m_fieldBuild.valid()) m_fieldBuild.wait();
+}
+
+std::optional<size_t> CoarseToFinePreview::translatedObject(const scene::Scene& edited,
+                                                            const scene::ChangeSet& changes) const {
+    if (changes.edits().empty() || edited.objects.size() != m_fine->scene().objects.size()) return std::nullopt;
+    std::optional<scene::EntityRef> entity;
+    for (const scene::Edit& e : changes.edits()) {
+        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
+        if (!edit || edit->entity.kind != scene::EntityKind::Object || edit->property != "translation" ||
+            (entity && edit->entity != *entity))
+            return std::nullopt;
+        entity = edit->entity;
+    }
+    for (size_t j = 0; j < edited.objects.size(); ++j)
+        if (edited.objects[j].id == entity->id) return j;
+    return std::nullopt;
+}
+
+void CoarseToFinePreview::collectFieldBuild(bool wait) {
+    if (!m_fieldBuild.valid()) return;
+    if (!wait && m_fieldBuild.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    // Refused (dropped) when the full preview changed since the build read it.
+    m_fine->installShadowField(m_fieldBuild.get());
+}
+
+bool CoarseToFinePreview::waitForFieldDrag(size_t object) {
+    collectFieldBuild(true);
+    return m_fine->fieldDragReady(object);
+}
+
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
     scene::ChangeSet merged = m_pending ? m_pending->changes : scene::ChangeSet{};
     merged.merge(changes);
+    collectFieldBuild(false);
+    const std::optional<size_t> moved = m_fieldSettings ? translatedObject(edited, merged) : std::nullopt;
+    if (moved && !m_fieldBuild.valid() && m_fine->fieldDragReady(*moved)) {
+        // Every edit since the full preview's state translates the field's object: the full
+        // preview takes them through the field; the coarse one gets them with applyFine.
+        EditSummary summary = m_fine->applyChanges(edited, merged);
+        if (m_coarseBehind) m_coarseBehind->merge(changes);
+        else m_coarseBehind = changes;
+        m_pending.reset();
+        m_material.reset();
+        m_fieldAhead = true;
+        return summary;
+    }
+    if (moved && !m_fieldBuild.valid() && !m_fieldAhead) { // the build reads the full preview as it is
+        m_fieldBuildObject = *moved;
+        m_fieldBuild = std::async(std::launch::async, [fine = m_fine.get(), object = *moved, settings = *m_fieldSettings] {
+            return fine->prepareShadowField(object, settings);
+        });
+    }
     // Only material edits since the full preview's state: its visibility stands, so the first
     // answer is its untruncated material answer; the coarse preview takes these edits later.
     util::Timer timer;
@@ -76,18 +129,30 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
 }
 
 EditSummary CoarseToFinePreview::applyFine() {
-    if (!m_pending) {
+    if (!m_pending && !m_fieldAhead) {
         EditSummary none;
         none.kind = "display";
         return none;
     }
-    Pending pending = std::move(*m_pending);
-    m_pending.reset();
-    const EditSummary summary = m_fine->applyChanges(*pending.scene, pending.changes);
-    // Rebuilds deferred points, with the material edits the coarse preview is behind by.
-    if (m_coarseBehind) m_coarse->applyChanges(*pending.scene, *m_coarseBehind);
+    collectFieldBuild(true); // it reads the full preview, which changes now
+    EditSummary summary;
+    if (m_pending) { // exact: a field drag's points settle first (RelightPreview::applyChanges)
+        Pending pending = std::move(*m_pending);
+        m_pending.reset();
+        summary = m_fine->applyChanges(*pending.scene, pending.changes, false, /*useField=*/false);
+    } else { // only field-drag frames since the exact state: their points rebuilt exactly
+        const size_t approximate = m_fine->approximatePoints();
+        summary = m_fine->applyChanges(m_fine->scene(), scene::ChangeSet{});
+        summary.kind = "object";
+        summary.method = "shadowField settled";
+        summary.pointsTouched = approximate;
+    }
+    // Rebuilds deferred points, with the edits the coarse preview is behind by (material first
+    // answers, field-drag frames).
+    if (m_coarseBehind) m_coarse->applyChanges(m_fine->scene(), *m_coarseBehind);
     else m_coarse->applyChanges(m_coarse->scene(), scene::ChangeSet{});
     m_coarseBehind.reset();
+    m_fieldAhead = false;
     snapshot();
     return summary;
 }

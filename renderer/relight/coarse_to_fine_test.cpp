@@ -105,5 +105,80 @@ TEST_P(RelightFirstAnswer, CorrectedFirstAnswerIsCloseToTheExactPreview) {
 
 INSTANTIATE_TEST_SUITE_P(Defer, RelightFirstAnswer, ::testing::Bool());
 
+// Field drags (enableFieldDrags): the first translation frame starts the object's field and drag
+// caches on a thread of their own and is the coarse first answer; once they are in, frames go to
+// the full preview through the field — its image is the first answer, closer to the exact preview
+// than the coarse first answer of the same frames — and applyFine makes both previews exact
+// again. A second drag reuses the field (caches rebuilt); another edit during it, and a build still
+// running when the preview goes, are handled.
+TEST(RelightCoarseToFine, FieldDragFramesGoToTheFullPreviewAndSettleExactly) {
+    using K = scene::EntityKind;
+    scene::Scene scene = testing::makeRelightScene();
+    RelightSettings settings = testing::smallSettings();
+    settings.width = 40;
+    settings.height = 32;
+    auto preview = CoarseToFinePreview::create(scene, settings, -1, 2, true);
+    auto plain = CoarseToFinePreview::create(scene, settings, -1, 2, true); // no field drags
+    ASSERT_TRUE(preview && plain);
+    ShadowFieldSettings field;
+    field.reuseOwnStates = true;
+    (*preview)->enableFieldDrags(field);
+    const int w = settings.width, h = settings.height;
+    constexpr size_t kBox = 1;
+    auto frame = [&](const glm::vec3& to, bool alsoPlain) {
+        scene::ChangeSet changes;
+        EXPECT_TRUE(changes.setProperty(scene, {K::Object, 4}, "translation", to));
+        EXPECT_TRUE(changes.apply(scene));
+        if (alsoPlain) (*plain)->applyCoarse(scene, changes);
+        return (*preview)->applyCoarse(scene, changes);
+    };
+    EXPECT_NE(frame(glm::vec3(0.2f, 0.5f, 0.0f), true).method, "shadowField"); // the build starts
+    ASSERT_TRUE((*preview)->waitForFieldDrag(kBox));
+    for (const glm::vec3& to : {glm::vec3(0.25f, 0.5f, 0.05f), glm::vec3(0.35f, 0.5f, 0.1f)}) {
+        const EditSummary summary = frame(to, true);
+        EXPECT_EQ(summary.method, "shadowField");
+        EXPECT_GT(summary.statesCarried, 0u);
+        EXPECT_TRUE((*preview)->finePending());
+        EXPECT_EQ(util::maxRelativeDifference((*preview)->firstAnswer(w, h), (*preview)->fine().image(w, h)), 0.0);
+    }
+    auto scratch = RelightPreview::create(scene, settings);
+    ASSERT_TRUE(scratch);
+    const double fieldError = relativeRmse((*preview)->firstAnswer(w, h), (*scratch)->image());
+    const double coarseError = relativeRmse((*plain)->firstAnswer(w, h), (*scratch)->image());
+    std::printf("relRMSE vs the exact preview after 3 frames: field drag %.4f, coarse first answer %.4f\n",
+                fieldError, coarseError);
+    EXPECT_GT(fieldError, 0.0); // approximate
+    EXPECT_LT(fieldError, 0.5 * coarseError);
+
+    auto expectExact = [&] {
+        EXPECT_FALSE((*preview)->finePending());
+        auto fine = RelightPreview::create(scene, settings);
+        auto coarse = RelightPreview::create(scene, (*preview)->coarse().settings());
+        ASSERT_TRUE(fine && coarse);
+        EXPECT_LE(util::maxRelativeDifference((*preview)->firstAnswer(w, h), (*fine)->image()), 1e-6);
+        EXPECT_LE(util::maxRelativeDifference((*preview)->coarseImage(w, h), (*coarse)->image(w, h)), 1e-6);
+    };
+    const EditSummary settled = (*preview)->applyFine();
+    EXPECT_EQ(settled.method, "shadowField settled");
+    EXPECT_GT(settled.pointsTouched, 0u);
+    ASSERT_NO_FATAL_FAILURE(expectExact());
+
+    // A second drag: the caches rebuilt for it (the field kept), then a roughness edit mid-drag.
+    EXPECT_NE(frame(glm::vec3(0.4f, 0.5f, 0.1f), false).method, "shadowField");
+    ASSERT_TRUE((*preview)->waitForFieldDrag(kBox));
+    EXPECT_EQ(frame(glm::vec3(0.45f, 0.5f, 0.1f), false).method, "shadowField");
+    scene::ChangeSet rough;
+    ASSERT_TRUE(rough.setProperty(scene, {K::Material, 2}, "roughness", 0.5f));
+    ASSERT_TRUE(rough.apply(scene));
+    EXPECT_NE((*preview)->applyCoarse(scene, rough).method, "shadowField");
+    EXPECT_TRUE((*preview)->finePending());
+    EXPECT_NE((*preview)->applyFine().method, "shadowField settled");
+    ASSERT_NO_FATAL_FAILURE(expectExact());
+
+    // A build still running when the preview goes: the destructor waits for it.
+    frame(glm::vec3(0.5f, 0.5f, 0.1f), false);
+    preview->reset();
+}
+
 } // namespace
 } // namespace wavelit::relight

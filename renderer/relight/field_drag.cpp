@@ -65,30 +65,60 @@ int64_t RelightPreview::FieldDrag::nearestOwn(const glm::vec3& offset, const glm
 }
 
 ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFieldSettings& settings) {
-    ShadowFieldInfo info;
     if (m_field) settleFieldDrag(true);
-    if (object >= m_occluders.size()) return info;
-    m_field = std::make_unique<FieldDrag>();
-    m_field->object = object;
+    PreparedShadowField prepared = prepareShadowField(object, settings);
+    const ShadowFieldInfo info = prepared.info;
+    installShadowField(std::move(prepared));
+    return info;
+}
+
+RelightPreview::PreparedShadowField RelightPreview::prepareShadowField(size_t object,
+                                                                       const ShadowFieldSettings& settings) const {
+    PreparedShadowField prepared;
+    if (object >= m_occluders.size() || fieldApproximate()) return prepared;
+    auto drag = std::make_unique<FieldDrag>();
+    drag->object = object;
+    ShadowFieldInfo& info = prepared.info;
     util::Timer timer;
-    m_field->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads);
+    if (m_field && m_field->object == object && m_field->field.settings() == settings)
+        drag->field = m_field->field; // world-axis masks about the object's centre: still valid
+    else
+        drag->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads);
     info.fieldMs = timer.milliseconds();
-    info.fieldBytes = m_field->field.bytes();
-    m_field->approximate.assign(m_points.size(), 0);
+    info.fieldBytes = drag->field.bytes();
+    drag->approximate.assign(m_points.size(), 0);
     timer.restart();
-    buildDragCaches();
+    buildDragCaches(*drag);
     info.cacheMs = timer.milliseconds();
-    for (const PointDragCache& c : m_field->caches)
+    for (const PointDragCache& c : drag->caches)
         if (c.valid) {
             ++info.cachedPoints;
             info.cacheBytes += c.bytes();
         }
-    return info;
+    prepared.drag = std::move(drag);
+    prepared.revision = m_revision;
+    return prepared;
+}
+
+bool RelightPreview::installShadowField(PreparedShadowField&& prepared) {
+    if (!prepared.drag || prepared.revision != m_revision || fieldApproximate()) return false;
+    m_field = std::move(prepared.drag);
+    return true;
+}
+
+bool RelightPreview::fieldDragReady(size_t object) const {
+    return m_field && m_field->object == object && m_field->cachesValid;
 }
 
 bool RelightPreview::fieldApproximate() const {
     return m_field && std::any_of(m_field->approximate.begin(), m_field->approximate.end(),
                                   [](uint8_t a) { return a != 0; });
+}
+
+size_t RelightPreview::approximatePoints() const {
+    return m_field ? size_t(std::count_if(m_field->approximate.begin(), m_field->approximate.end(),
+                                          [](uint8_t a) { return a != 0; }))
+                   : 0;
 }
 
 const std::vector<glm::vec3>& RelightPreview::fieldEnvTexels() const {
@@ -106,8 +136,7 @@ bool RelightPreview::isFieldDrag(const scene::Scene& edited, const scene::Change
     return true;
 }
 
-void RelightPreview::buildDragCaches() {
-    FieldDrag& f = *m_field;
+void RelightPreview::buildDragCaches(FieldDrag& f) const {
     scene::Scene without = *m_scene;
     without.objects.erase(without.objects.begin() + std::ptrdiff_t(f.object));
     f.bvhWithout = scene::buildBvh(without);
@@ -189,16 +218,15 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     summary.kind = "object";
     summary.method = "shadowField";
     util::Timer timer;
+    if (!f.cachesValid) { // from the state before this edit: the object's own points where it was
+        buildDragCaches(f);
+        summary.cacheMs = timer.milliseconds();
+    }
     const BoundingSphere oldBounds = m_occluders[j].bounds;
     m_scene = std::make_unique<scene::Scene>(edited);
     resolveMaterials();
     m_occluders[j] = buildObjectOccluder(*m_scene, j, m_convexity);
     summary.factorsRebuilt = {"occlusion:" + m_scene->objects[j].name + " (shadow field)", "gbuffer"};
-    if (!f.cachesValid) {
-        util::Timer cacheTimer;
-        buildDragCaches();
-        summary.cacheMs = cacheTimer.milliseconds();
-    }
     m_bvh = scene::buildBvh(*m_scene);
     const BoundingSphere sphere = m_occluders[j].bounds;
     const std::vector<PreviewPoint> cast = recastNear({oldBounds, sphere});

@@ -65,9 +65,10 @@ bool lightConeMeets(const scene::Light& light, const glm::vec3& origin, const Bo
 } // namespace
 
 EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
-                                         bool deferMovedObjects) {
+                                         bool deferMovedObjects, bool useField) {
+    ++m_revision;
     if (m_field) {
-        if (!deferMovedObjects && isFieldDrag(edited, changes)) return applyFieldDrag(edited);
+        if (useField && !deferMovedObjects && isFieldDrag(edited, changes)) return applyFieldDrag(edited);
         bool dropField = structural(*m_scene, edited, changes);
         for (const scene::Invalidation& inv : changes.invalidations())
             dropField = dropField || (inv.factor == scene::FactorKind::ObjectGeometry &&

@@ -81,6 +81,8 @@ struct ShadowFieldInfo {
 };
 
 class RelightPreview {
+    struct FieldDrag; // the shadow-field drag's state (below)
+
 public:
     // Invalid error when the settings are out of range (level 1..7, size 1..4096, keep >= 1).
     static util::Result<std::unique_ptr<RelightPreview>> create(const scene::Scene& scene,
@@ -91,8 +93,10 @@ public:
     // meets an object this edit moves keep their old point and state — their image is stale, the
     // rest exact — and are listed by deferred(); the next edit without it (an empty change set
     // will do) rebuilds them from scratch first, so the preview equals create() again after it.
+    // useField false: a translation of the field's object takes the exact path too (the field
+    // is kept; the caller wants the exact state at once, CoarseToFinePreview::applyFine).
     EditSummary applyChanges(const scene::Scene& edited, const scene::ChangeSet& changes,
-                             bool deferMovedObjects = false);
+                             bool deferMovedObjects = false, bool useField = true);
     const std::vector<uint8_t>& deferred() const { return m_deferred; }
 
     // Translation drags of `object` through its shadow field (docs/relighting.md §7.0e): builds the
@@ -107,7 +111,30 @@ public:
     // from the drag start's nearest point of it instead (carriedVisibilityState: no rays, no T;
     // summary.statesCarried), and the first other edit rebuilds them whole (§7.0j).
     ShadowFieldInfo enableShadowField(size_t object, const ShadowFieldSettings& settings = {});
+    // enableShadowField in two halves, for a caller that builds off its own thread (the editor's
+    // drags, coarse_to_fine.h): prepareShadowField only reads this preview (concurrent const
+    // calls are safe; no edit may run meanwhile) and returns the field and the drag caches of
+    // the state it read — reusing this preview's field of the object when the settings match
+    // (its masks stay valid while the object only translates); installShadowField takes them
+    // when no edit came in between (else false: prepare again). Nothing is prepared (an invalid
+    // result) while some point's terms come from a field.
+    struct PreparedShadowField {
+        ShadowFieldInfo info;
+        bool valid() const { return drag != nullptr; }
+
+    private:
+        friend class RelightPreview;
+        std::unique_ptr<FieldDrag> drag;
+        uint64_t revision = 0;
+    };
+    PreparedShadowField prepareShadowField(size_t object, const ShadowFieldSettings& settings = {}) const;
+    bool installShadowField(PreparedShadowField&& prepared);
+    // Whether a translation of `object` would be a field drag now without building anything
+    // first (its field installed, the drag caches built).
+    bool fieldDragReady(size_t object) const;
+    bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;
     bool fieldApproximate() const; // some point's terms come from the field
+    size_t approximatePoints() const; // how many
     // Per point: whether the last applyChanges did any work on it.
     const std::vector<uint8_t>& lastTouched() const { return m_touched; }
     const ShadowField* shadowField() const { return m_field ? &m_field->field : nullptr; }
@@ -208,9 +235,9 @@ private:
         int64_t nearestOwn(const glm::vec3& offset, const glm::vec3& normal) const;
     };
     std::unique_ptr<FieldDrag> m_field;
-    bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;
+    uint64_t m_revision = 0; // counts applyChanges calls: what a prepared field was built from
     EditSummary applyFieldDrag(const scene::Scene& edited);
-    void buildDragCaches();
+    void buildDragCaches(FieldDrag& f) const; // from the current points and states
     // Before any other edit: the exact state back; `dropField` also forgets the field.
     void settleFieldDrag(bool dropField);
 };

@@ -37,6 +37,7 @@ struct ShadowFieldSettings {
     // it (self and other objects' occlusion) and their terms untruncated with their own BRDF,
     // instead of rays and a new T.
     bool reuseOwnStates = false;
+    bool operator==(const ShadowFieldSettings&) const = default;
 };
 
 class ShadowField {

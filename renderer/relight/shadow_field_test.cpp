@@ -279,11 +279,33 @@ TEST(RelightShadowField, NonConvexObjectReusesItsOwnSelfVisibility) {
                 own, selfShadowed, summary.selfMasksReused, mismatched, texels, unshadowedWrong, relRmse);
 }
 
+// The relative RMSE of `carried`'s terms (environment, first light) on the box's points against
+// `exact`'s, which must hit them identically; `own` gets how many there are, `withoutT` how many
+// carry no T (carried states).
+double ownTermsRelRmse(const RelightPreview& carried, const RelightPreview& exact, size_t& own, size_t& withoutT) {
+    std::vector<size_t> box;
+    boxPoints(carried, exact, box);
+    own = box.size();
+    withoutT = 0;
+    double sumSq = 0.0, sumRef = 0.0;
+    for (size_t i : box) {
+        const PointState& a = carried.states()[i];
+        const PointState& b = exact.states()[i];
+        withoutT += a.transfer.index.empty() ? 1 : 0;
+        for (const auto& [got, ref] : {std::pair{a.envTerm, b.envTerm}, std::pair{a.lightTerms.at(0), b.lightTerms.at(0)}}) {
+            sumSq += double(glm::dot(got - ref, got - ref));
+            sumRef += double(ref.x + ref.y + ref.z) / 3.0;
+        }
+    }
+    return own ? std::sqrt(sumSq / double(2 * own * 3)) / (sumRef / double(2 * own)) : 0.0;
+}
+
 // (5) With reuseOwnStates the moved object's points take their visibility (self and the other
 // objects' occlusion) from the drag start's nearest point of it, with no rays and no T, and their
 // terms untruncated with their own BRDF and view direction (carriedVisibilityState). Against the
 // exact drag their terms stay close; the first other edit rebuilds them, and the preview is
-// create()'s on the edited scene again, T included.
+// create()'s on the edited scene again, T included. A second drag (its caches rebuilt at its
+// first step, from where the object was before that step) is a drag from a field enabled there.
 TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
     scene::Scene scene = stepScene();
     RelightSettings settings = stepSettings();
@@ -305,26 +327,14 @@ TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
     EXPECT_EQ(summary.method, "shadowField");
     EXPECT_TRUE((*carried)->fieldApproximate());
 
-    std::vector<size_t> box;
-    ASSERT_NO_FATAL_FAILURE(boxPoints(**carried, **exact, box));
-    const size_t own = box.size();
-    size_t withoutT = 0;
-    double sumSq = 0.0, sumRef = 0.0;
-    for (size_t i : box) {
-        const PointState& a = (*carried)->states()[i];
-        const PointState& b = (*exact)->states()[i];
-        withoutT += a.transfer.index.empty() ? 1 : 0;
-        for (const auto& [got, ref] : {std::pair{a.envTerm, b.envTerm}, std::pair{a.lightTerms.at(0), b.lightTerms.at(0)}}) {
-            sumSq += double(glm::dot(got - ref, got - ref));
-            sumRef += double(ref.x + ref.y + ref.z) / 3.0;
-        }
-    }
+    size_t own = 0, withoutT = 0;
+    double relRmse = 0.0;
+    ASSERT_NO_FATAL_FAILURE(relRmse = ownTermsRelRmse(**carried, **exact, own, withoutT));
     ASSERT_GT(own, 50u);
     // Every own point of a 2-step drag is carried but those with no cached point near them.
     EXPECT_EQ(summary.statesCarried, withoutT);
     EXPECT_GT(summary.statesCarried, own * 9 / 10);
     EXPECT_LT(summary.pointsRebuilt, own / 10);
-    const double relRmse = std::sqrt(sumSq / double(2 * own * 3)) / (sumRef / double(2 * own));
     EXPECT_LT(relRmse, 0.05);
     std::printf("own points %zu, carried %zu, rebuilt %zu; own terms relRMSE %.4f against the exact drag\n", own,
                 summary.statesCarried, summary.pointsRebuilt, relRmse);
@@ -341,6 +351,27 @@ TEST(RelightShadowField, CarriedOwnStatesAreCloseAndSettleToExact) {
         EXPECT_EQ((*carried)->states()[i].transfer.index, (*scratch)->states()[i].transfer.index) << i;
         EXPECT_EQ((*carried)->states()[i].transfer.value, (*scratch)->states()[i].transfer.value) << i;
     }
+
+    // The second drag, on from there: the field kept, the caches rebuilt at its first step from
+    // where the object was then — the same preview as a field enabled there.
+    auto fresh = RelightPreview::create(scene, settings);
+    ASSERT_TRUE(fresh);
+    (*fresh)->enableShadowField(kBox, field);
+    scene::Scene freshScene = scene;
+    ASSERT_TRUE(env.apply(exactScene));
+    (*exact)->applyChanges(exactScene, env);
+    for (const glm::vec3& to : {glm::vec3(-0.04f, 0.25f, 0.04f), glm::vec3(-0.02f, 0.25f, 0.05f)}) {
+        summary = move(**carried, scene, to);
+        move(**fresh, freshScene, to);
+        move(**exact, exactScene, to);
+    }
+    EXPECT_EQ(summary.method, "shadowField");
+    EXPECT_LE(maxRelImageDiff((*carried)->image(), (*fresh)->image()), 1e-6);
+    ASSERT_NO_FATAL_FAILURE(relRmse = ownTermsRelRmse(**carried, **exact, own, withoutT));
+    EXPECT_GT(summary.statesCarried, own * 9 / 10);
+    EXPECT_LT(relRmse, 0.05);
+    std::printf("second drag: own points %zu, carried %zu; own terms relRMSE %.4f against the exact drag\n", own,
+                summary.statesCarried, relRmse);
 }
 
 } // namespace
