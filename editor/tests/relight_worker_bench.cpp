@@ -4,13 +4,17 @@
 // runs, so the process's CPU time between a job's submission and the worker's answer is the
 // worker's (its thread and the preview's parallelFor threads).
 //   relight_worker_bench SCENE [SIZE = 512] [STEPS = 8] [OBJECT = the first]
-// Drags the object along +X (5 cm per frame), pauses, then steps the first glossy
-// material's roughness (+0.05 per frame), pauses; prints one line per job: what came back
-// (first answer / exact preview / skipped), wall ms, CPU ms; and the resident memory the build
-// added.
+// Drags the object round a circle of 0.3 m radius in the ground plane (5 cm per frame, so it
+// stays in view however many steps), pauses, drags it on the same way STEPS / 2 frames more and
+// pauses (a second drag of the same object), then steps the first glossy material's roughness
+// (+0.05 per frame, at most 8 frames), pauses; prints one line per job: what came back (first answer / exact
+// preview / skipped), wall ms, CPU ms; the resident memory the build added; and, after the run,
+// the relative RMSE of every 4th drag frame's image against the exact preview of its scene
+// (RelightPreview::create at the worker's settings: what the frame approximates).
 #include "viewport/relight_worker.h"
 #include "viewport/render_worker.h"
 
+#include "relight/first_answer.h"
 #include "scene/scene_io.h"
 
 #include <QCoreApplication>
@@ -23,6 +27,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 
@@ -60,6 +65,7 @@ struct Answer {
     quint64 generation = 0;
     bool skipped = false, first = false;
     QString what;
+    std::shared_ptr<const util::ImageRGB> image;
 };
 
 } // namespace
@@ -86,9 +92,9 @@ int main(int argc, char** argv) {
     QObject::connect(&thread, &QThread::finished, worker, &QObject::deleteLater);
     Answer last;
     QObject::connect(worker, &RelightWorker::frameReady, &app, [&](const RenderFrame& f) {
-        last = {f.generation, false, f.lastUpdate.contains("first answer"), f.lastUpdate};
+        last = {f.generation, false, f.lastUpdate.contains("first answer"), f.lastUpdate, f.image};
     }, Qt::QueuedConnection);
-    QObject::connect(worker, &RelightWorker::skipped, &app, [&](quint64 g) { last = {g, true, false, "skipped"}; },
+    QObject::connect(worker, &RelightWorker::skipped, &app, [&](quint64 g) { last = {g, true, false, "skipped", {}}; },
                      Qt::QueuedConnection);
     thread.start();
 
@@ -152,17 +158,45 @@ int main(int argc, char** argv) {
     timed("edit", 0, [&] { edit(object, "translation", t0 + glm::vec3(0.01f, 0.0f, 0.0f)); });
     pause("build");
     std::printf("resident memory: %.1f MiB before the build, %.1f MiB after (+%.1f)\n", rss0, rssMiB(), rssMiB() - rss0);
-    for (int i = 1; i <= steps; ++i)
-        timed("drag", i, [&] { edit(object, "translation", t0 + glm::vec3(0.01f + 0.05f * float(i), 0.0f, 0.0f)); });
+    // Round a circle through t0 + (0.01, 0, 0), 5 cm of arc a frame.
+    auto onCircle = [&](int i) {
+        const float angle = 0.05f * float(i) / 0.3f;
+        return t0 + glm::vec3(0.01f + 0.3f * std::sin(angle), 0.0f, 0.3f * (1.0f - std::cos(angle)));
+    };
+    struct Kept {
+        std::string label;
+        std::shared_ptr<const scene::Scene> scene;
+        std::shared_ptr<const util::ImageRGB> image;
+        bool first;
+    };
+    std::vector<Kept> kept; // every 4th drag frame: its scene and what the worker showed
+    auto drag = [&](const char* label, int from, int to) {
+        for (int i = from; i <= to; ++i) {
+            timed(label, i, [&] { edit(object, "translation", onCircle(i)); });
+            if (i % 4 == 0 && last.image && last.generation == generation)
+                kept.push_back({std::string(label) + " " + std::to_string(i), current, last.image, last.first});
+        }
+    };
+    drag("drag", 1, steps);
+    pause("pause");
+    std::printf("resident memory after the drag: %.1f MiB\n", rssMiB());
+    drag("drag2", steps + 1, steps + steps / 2);
     pause("pause");
     float roughness = 0.0f;
     for (const scene::Material& m : current->materials)
         if (m.id == material.id) roughness = m.roughness;
-    for (int i = 1; i <= steps / 2; ++i)
+    for (int i = 1; i <= std::min(steps / 2, 8); ++i) // roughness stays within [0, 1]
         timed("roughness", i, [&] { edit(material, "roughness", roughness + 0.05f * float(i)); });
     pause("pause");
     shared->cancel.store(true);
     thread.quit();
     thread.wait();
+    const relight::RelightSettings settings = RelightWorker::previewSettings(scene, size, size);
+    for (const Kept& k : kept) {
+        auto exact = relight::RelightPreview::create(*k.scene, settings);
+        if (!exact) return 1;
+        std::printf("%-9s %-13s relRMSE vs the exact preview %.4f\n", k.label.c_str(),
+                    k.first ? "first answer" : "exact", relight::relativeRmse(*k.image, (*exact)->image(size, size)));
+    }
     return 0;
 }

@@ -49,6 +49,12 @@ QString kiB(size_t bytes) { return QString::number(double(bytes) / 1024.0, 'f', 
 
 } // namespace
 
+relight::ShadowFieldSettings RelightWorker::fieldDragSettings() {
+    relight::ShadowFieldSettings settings; // the field of docs/relighting.md §7.0e
+    settings.reuseOwnStates = true;        // the moved object's own points without rays (§7.0j)
+    return settings;
+}
+
 relight::RelightSettings RelightWorker::previewSettings(const scene::Scene& scene, int width, int height) {
     relight::RelightSettings settings;
     // One point per render pixel up to kMaxPreviewPoints per side, the aspect kept.
@@ -129,9 +135,13 @@ void RelightWorker::step() {
     if (handling == Handling::Exact) m_preview->applyFine(); // with any first-answer edits pending
     m_previewGeneration = job.generation;
     const bool first = m_preview->finePending();
+    const QString kind = summary.method.empty()
+                             ? QString::fromStdString(summary.kind)
+                             : QStringLiteral("%1 (%2)").arg(QString::fromStdString(summary.kind),
+                                                             QString::fromStdString(summary.method));
     publish(job.generation, QStringLiteral("relight %1: %2, %3 points in %4 ms")
                                 .arg(first ? QStringLiteral("first answer") : QStringLiteral("preview"))
-                                .arg(QString::fromStdString(summary.kind))
+                                .arg(kind)
                                 .arg(summary.pointsTouched)
                                 .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 1));
     if (first) m_fineTimer->start(); // restarted by every drag frame: fires once the drag pauses
@@ -144,8 +154,12 @@ void RelightWorker::refine() {
     QElapsedTimer timer;
     timer.start();
     const relight::EditSummary summary = m_preview->applyFine();
+    const QString kind = summary.method.empty()
+                             ? QString::fromStdString(summary.kind)
+                             : QStringLiteral("%1 (%2)").arg(QString::fromStdString(summary.kind),
+                                                             QString::fromStdString(summary.method));
     publish(m_previewGeneration, QStringLiteral("relight preview after the pause: %1, %2 points in %3 ms")
-                                     .arg(QString::fromStdString(summary.kind))
+                                     .arg(kind)
                                      .arg(summary.pointsTouched)
                                      .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0));
 }
@@ -159,6 +173,7 @@ void RelightWorker::rebuild() {
                                                         -1, kCoarseStride, /*deferMovedObjects=*/true);
     if (!created) return; // the path tracer shows the scene (and reports real problems)
     m_preview = std::move(created.value());
+    m_preview->enableFieldDrags(fieldDragSettings());
     m_previewGeneration = m_latestGeneration;
     publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms (%2 points, %3; coarse-to-fine "
                                                "+%4)")

@@ -10,7 +10,10 @@
 //   object, other material edits (a drag,      applyCoarse, then the corrected first answer
 //   a roughness slider)                        (firstAnswer, tens of ms): an APPROXIMATE frame
 //                                              (for material edits alone: the full preview's
-//                                              untruncated answer, docs/relighting.md §7.0g);
+//                                              untruncated answer, docs/relighting.md §7.0g;
+//                                              for an object's translation, once its shadow
+//                                              field is built beside the drag: the full
+//                                              preview through the field, §7.0k);
 //                                              once no job came for kFinePauseMs, applyFine
 //                                              (every pending edit merged into one full update)
 //                                              and the exact frame;
@@ -21,7 +24,7 @@
 // a first answer: linear radiance of direct lighting (the preview has no interreflection),
 // upsampled (nearest point) to the render size and tone-mapped here.
 // The controller decides what the viewport shows (render_controller.h: the hand-over).
-// Shutdown waits for a running build or edit (not interruptible: relight_preview.h; ~0.5-2 s for
+// Shutdown waits for a running build or edit, and a field being built (not interruptible: relight_preview.h; ~0.5-2 s for
 // a 128^2 build on 2 cores, or a full update after a drag, docs/relighting.md §7).
 #pragma once
 
@@ -57,6 +60,9 @@ public:
     // The full preview's settings for a render of width x height (what the worker builds; tests
     // compare its frames with RelightPreview::create on the same settings).
     static relight::RelightSettings previewSettings(const scene::Scene& scene, int width, int height);
+    // Object translation drags go through the moved object's shadow field once it is built (on a
+    // thread of its own from the drag's first frame: CoarseToFinePreview::enableFieldDrags).
+    static relight::ShadowFieldSettings fieldDragSettings();
 
     explicit RelightWorker(std::shared_ptr<RenderShared> shared);
     ~RelightWorker() override;
