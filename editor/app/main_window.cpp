@@ -204,6 +204,7 @@ void MainWindow::wireViewportHandlers() {
     connect(m_document, &SceneDocument::sceneEdited, interaction, track);
     connect(m_document, &SceneDocument::displayChanged, interaction, track);
     connect(m_outline, &OutlinePanel::entitySelected, interaction, &ViewportInteraction::setSelection);
+    connect(m_outline, &OutlinePanel::entitySelected, m_render, &RenderController::selectionChanged);
     connect(interaction, &ViewportInteraction::selectRequested, this, [this](std::optional<EntityRef> ref) {
         if (!ref || !m_outline->select(*ref)) m_outline->tree()->clearSelection();
     });

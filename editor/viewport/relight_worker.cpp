@@ -101,6 +101,21 @@ void RelightWorker::submit(RenderJob job) {
     });
 }
 
+void RelightWorker::prepareObject(scene::EntityId object) {
+    if (cancelled() || m_pending || !m_preview || m_preview->finePending()) return;
+    const auto& objects = m_preview->fine().scene().objects;
+    for (size_t j = 0; j < objects.size(); ++j)
+        if (objects[j].id == object) m_preview->prepareFieldDrag(j);
+}
+
+bool RelightWorker::fieldReady(scene::EntityId object) {
+    if (!m_preview) return false;
+    const auto& objects = m_preview->fine().scene().objects;
+    for (size_t j = 0; j < objects.size(); ++j)
+        if (objects[j].id == object) return m_preview->fieldDragReady(j);
+    return false;
+}
+
 void RelightWorker::drop(quint64 generation) {
     m_preview.reset();
     m_previewGeneration = 0;

@@ -69,6 +69,14 @@ public:
 
     // Queued onto the worker's thread. A job without a scene drops the preview.
     void submit(RenderJob job);
+    // Queued onto the worker's thread when an object is selected: starts building its shadow
+    // field beside the drag that may follow (CoarseToFinePreview::prepareFieldDrag; 0.5-0.9 s of
+    // CPU on the bundled scenes, docs/relighting.md §7.0k), if a preview is up to date and no job
+    // waits. Its first drag frame then takes the field instead of the coarse first answer.
+    void prepareObject(scene::EntityId object);
+    // Whether `object`'s drag frames would take its shadow field now (on the worker's thread;
+    // tests ask through RenderController::relightFieldReady).
+    bool fieldReady(scene::EntityId object);
 
 signals:
     void frameReady(wavelit::editor::RenderFrame frame);

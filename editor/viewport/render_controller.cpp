@@ -111,6 +111,20 @@ void RenderController::setExposure(float ev) {
                               Qt::QueuedConnection);
 }
 
+void RenderController::selectionChanged(std::optional<scene::EntityRef> ref) {
+    if (!m_relight || !ref || ref->kind != scene::EntityKind::Object) return;
+    QMetaObject::invokeMethod(m_relight, [worker = m_relight, id = ref->id] { worker->prepareObject(id); },
+                              Qt::QueuedConnection);
+}
+
+bool RenderController::relightFieldReady(scene::EntityId object) const {
+    bool ready = false;
+    if (m_relight)
+        QMetaObject::invokeMethod(m_relight, [&ready, worker = m_relight, object] { ready = worker->fieldReady(object); },
+                                  Qt::BlockingQueuedConnection);
+    return ready;
+}
+
 void RenderController::setInteractive(bool active) {
     // The only call that does not stop at the cancel flag: after shutdown() no worker is left.
     if (m_shared->interactive.exchange(active) == active || active || !m_worker) return;

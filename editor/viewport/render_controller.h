@@ -95,6 +95,12 @@ public:
     // reduced-resolution drafts (render_worker.h); when it ends the full session takes the drag's
     // edits as one update.
     void setInteractive(bool active);
+    // The selection changed: a selected object's shadow field is built beside the path tracer,
+    // so its first translation drag can take it (RelightWorker::prepareObject).
+    void selectionChanged(std::optional<scene::EntityRef> ref);
+    // Whether the relighting preview holds `object`'s shadow field ready for a drag (asks the
+    // preview's thread and waits for its answer: for tests).
+    bool relightFieldReady(scene::EntityId object) const;
     // True while the render thread is inside a pass (tests wait for it).
     bool passRunning() const;
 

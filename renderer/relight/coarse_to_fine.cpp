@@ -35,9 +35,7 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
     return out;
 }
 
-CoarseToFinePreview::~CoarseToFinePreview() {
-    if (m_fieldBuild.valid()) m_fieldBuild.wait();
-}
+CoarseToFinePreview::~CoarseToFinePreview() { collectFieldBuild(Collect::Cancel); }
 
 std::optional<size_t> CoarseToFinePreview::translatedObject(const scene::Scene& edited,
                                                             const scene::ChangeSet& changes) const {
@@ -55,22 +53,45 @@ std::optional<size_t> CoarseToFinePreview::translatedObject(const scene::Scene& 
     return std::nullopt;
 }
 
-void CoarseToFinePreview::collectFieldBuild(bool wait) {
+void CoarseToFinePreview::collectFieldBuild(Collect how) {
     if (!m_fieldBuild.valid()) return;
-    if (!wait && m_fieldBuild.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    // Refused (dropped) when the full preview changed since the build read it.
+    if (how == Collect::Poll && m_fieldBuild.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    if (how == Collect::Cancel) m_cancelBuild.store(true);
+    // Refused (dropped) when cancelled, or when the full preview changed since the build read it.
     m_fine->installShadowField(m_fieldBuild.get());
 }
 
+void CoarseToFinePreview::startFieldBuild(size_t object) {
+    m_cancelBuild.store(false);
+    m_fieldBuild = std::async(std::launch::async, [fine = m_fine.get(), object, settings = *m_fieldSettings,
+                                                   cancel = &m_cancelBuild] {
+        return fine->prepareShadowField(object, settings, cancel);
+    });
+}
+
+bool CoarseToFinePreview::prepareFieldDrag(size_t object) {
+    collectFieldBuild(Collect::Poll);
+    if (!m_fieldSettings || m_fieldBuild.valid() || m_pending || m_fieldAhead ||
+        object >= m_fine->scene().objects.size() || m_fine->fieldDragReady(object))
+        return false;
+    startFieldBuild(object);
+    return true;
+}
+
+bool CoarseToFinePreview::fieldDragReady(size_t object) {
+    collectFieldBuild(Collect::Poll);
+    return m_fine->fieldDragReady(object);
+}
+
 bool CoarseToFinePreview::waitForFieldDrag(size_t object) {
-    collectFieldBuild(true);
+    collectFieldBuild(Collect::Wait);
     return m_fine->fieldDragReady(object);
 }
 
 EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes) {
     scene::ChangeSet merged = m_pending ? m_pending->changes : scene::ChangeSet{};
     merged.merge(changes);
-    collectFieldBuild(false);
+    collectFieldBuild(Collect::Poll);
     const std::optional<size_t> moved = m_fieldSettings ? translatedObject(edited, merged) : std::nullopt;
     if (moved && !m_fieldBuild.valid() && m_fine->fieldDragReady(*moved)) {
         // Every edit since the full preview's state translates the field's object: the full
@@ -83,12 +104,7 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
         m_fieldAhead = true;
         return summary;
     }
-    if (moved && !m_fieldBuild.valid() && !m_fieldAhead) { // the build reads the full preview as it is
-        m_fieldBuildObject = *moved;
-        m_fieldBuild = std::async(std::launch::async, [fine = m_fine.get(), object = *moved, settings = *m_fieldSettings] {
-            return fine->prepareShadowField(object, settings);
-        });
-    }
+    if (moved && !m_fieldBuild.valid() && !m_fieldAhead) startFieldBuild(*moved); // from the full preview as it is
     // Only material edits since the full preview's state: its visibility stands, so the first
     // answer is its untruncated material answer; the coarse preview takes these edits later.
     util::Timer timer;
@@ -134,7 +150,7 @@ EditSummary CoarseToFinePreview::applyFine() {
         none.kind = "display";
         return none;
     }
-    collectFieldBuild(true); // it reads the full preview, which changes now
+    collectFieldBuild(Collect::Cancel); // it reads the full preview, which changes now
     EditSummary summary;
     if (m_pending) { // exact: a field drag's points settle first (RelightPreview::applyChanges)
         Pending pending = std::move(*m_pending);

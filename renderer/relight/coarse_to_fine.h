@@ -13,6 +13,7 @@
 #include "relight/first_answer.h"
 #include "relight/relight_preview.h"
 
+#include <atomic>
 #include <future>
 #include <memory>
 #include <optional>
@@ -59,12 +60,21 @@ public:
     // next applyFine, which makes the full preview exact.
     EditSummary applyCoarse(const scene::Scene& edited, const scene::ChangeSet& changes);
     void enableFieldDrags(const ShadowFieldSettings& settings) { m_fieldSettings = settings; }
-    // Waits for a field being built and installs it if it still fits (tests; applyFine waits
-    // too). True when a field drag of `object` is ready.
+    // Starts building `object`'s field and caches before any drag (the editor: when the object
+    // is selected), so its first drag frame can take the field. Nothing when field drags are
+    // off, one is being built, the object's is ready, or the full preview is behind. True when
+    // a build started.
+    bool prepareFieldDrag(size_t object);
+    // Waits for a field being built and installs it if it still fits (tests). True when a field
+    // drag of `object` is ready.
     bool waitForFieldDrag(size_t object);
+    // The same without waiting: installs a finished build, then says whether `object`'s drag
+    // frames would take the field now.
+    bool fieldDragReady(size_t object);
     static constexpr const char* kUntruncatedCoarseLobes = "untruncated, coarse lobes";
     // Brings the full preview up to the newest edited scene with every pending change set merged
-    // into one (an empty summary, kind "display", when nothing is pending).
+    // into one (an empty summary, kind "display", when nothing is pending). A field still being
+    // built is cancelled first (it reads the full preview; it stops within a block of points).
     EditSummary applyFine();
     // Edits the full preview has not had, or has had through a shadow field only.
     bool finePending() const { return m_pending.has_value() || m_fieldAhead; }
@@ -90,7 +100,7 @@ public:
     // full preview's own copies).
     size_t extraBytes() const;
 
-    ~CoarseToFinePreview(); // waits for a field being built (it reads the full preview)
+    ~CoarseToFinePreview(); // cancels a field being built and waits for it (it reads the full preview)
 
 private:
     CoarseToFinePreview() = default;
@@ -113,10 +123,13 @@ private:
     // whether the full preview took edits through the field since its exact state.
     std::optional<ShadowFieldSettings> m_fieldSettings;
     std::future<RelightPreview::PreparedShadowField> m_fieldBuild;
-    size_t m_fieldBuildObject = 0;
+    std::atomic<bool> m_cancelBuild{false};
     bool m_fieldAhead = false;
-    // The built field installed into the full preview if it is ready (or once it is: wait).
-    void collectFieldBuild(bool wait);
+    void startFieldBuild(size_t object);
+    // A field being built: Poll installs it into the full preview if it is ready, Wait once it
+    // is, Cancel stops it and drops it.
+    enum class Collect { Poll, Wait, Cancel };
+    void collectFieldBuild(Collect how);
     // The object a change set only translates, if one.
     std::optional<size_t> translatedObject(const scene::Scene& edited, const scene::ChangeSet& changes) const;
 };

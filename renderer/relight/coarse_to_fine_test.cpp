@@ -109,8 +109,9 @@ INSTANTIATE_TEST_SUITE_P(Defer, RelightFirstAnswer, ::testing::Bool());
 // caches on a thread of their own and is the coarse first answer; once they are in, frames go to
 // the full preview through the field — its image is the first answer, closer to the exact preview
 // than the coarse first answer of the same frames — and applyFine makes both previews exact
-// again. A second drag reuses the field (caches rebuilt); another edit during it, and a build still
-// running when the preview goes, are handled.
+// again. A second drag reuses the field (caches rebuilt); another edit during it, a field prepared
+// before the drag, a build applyFine cancels and one still running when the preview goes are
+// handled.
 TEST(RelightCoarseToFine, FieldDragFramesGoToTheFullPreviewAndSettleExactly) {
     using K = scene::EntityKind;
     scene::Scene scene = testing::makeRelightScene();
@@ -174,9 +175,29 @@ TEST(RelightCoarseToFine, FieldDragFramesGoToTheFullPreviewAndSettleExactly) {
     EXPECT_TRUE((*preview)->finePending());
     EXPECT_NE((*preview)->applyFine().method, "shadowField settled");
     ASSERT_NO_FATAL_FAILURE(expectExact());
+    EXPECT_NE((*preview)->fine().shadowField(), nullptr); // translated the exact way: kept
 
-    // A build still running when the preview goes: the destructor waits for it.
-    frame(glm::vec3(0.5f, 0.5f, 0.1f), false);
+    // Prepared before the drag (the editor: on selection), the first frame takes the field; a
+    // build that applyFine meets is cancelled and dropped (the next one starts afresh).
+    EXPECT_FALSE((*preview)->fine().fieldDragReady(kBox)); // the caches went with the settle
+    ASSERT_TRUE((*preview)->prepareFieldDrag(kBox));
+    EXPECT_FALSE((*preview)->prepareFieldDrag(kBox)); // one at a time
+    scene::ChangeSet light; // a light move, applied at once (the editor's exact edits)
+    ASSERT_TRUE(light.setProperty(scene, {K::Light, 7}, "position", glm::vec3(-1.0f, 2.2f, 0.3f)));
+    ASSERT_TRUE(light.apply(scene));
+    (*preview)->applyCoarse(scene, light);
+    EXPECT_EQ((*preview)->applyFine().kind, "light"); // the build cancelled first
+    EXPECT_FALSE((*preview)->fine().fieldDragReady(kBox));
+    ASSERT_NO_FATAL_FAILURE(expectExact());
+    ASSERT_TRUE((*preview)->prepareFieldDrag(kBox));
+    ASSERT_TRUE((*preview)->waitForFieldDrag(kBox));
+    EXPECT_FALSE((*preview)->prepareFieldDrag(kBox)); // ready already
+    EXPECT_EQ(frame(glm::vec3(0.5f, 0.5f, 0.1f), false).method, "shadowField");
+    (*preview)->applyFine();
+    ASSERT_NO_FATAL_FAILURE(expectExact());
+
+    // A build still running when the preview goes: the destructor cancels it and waits.
+    frame(glm::vec3(0.55f, 0.5f, 0.1f), false);
     preview->reset();
 }
 

@@ -73,7 +73,8 @@ ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFie
 }
 
 RelightPreview::PreparedShadowField RelightPreview::prepareShadowField(size_t object,
-                                                                       const ShadowFieldSettings& settings) const {
+                                                                       const ShadowFieldSettings& settings,
+                                                                       const std::atomic<bool>* cancel) const {
     PreparedShadowField prepared;
     if (object >= m_occluders.size() || fieldApproximate()) return prepared;
     auto drag = std::make_unique<FieldDrag>();
@@ -83,12 +84,15 @@ RelightPreview::PreparedShadowField RelightPreview::prepareShadowField(size_t ob
     if (m_field && m_field->object == object && m_field->field.settings() == settings)
         drag->field = m_field->field; // world-axis masks about the object's centre: still valid
     else
-        drag->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads);
+        drag->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads, cancel);
+    auto cancelled = [&] { return cancel && cancel->load(); };
+    if (cancelled()) return prepared;
     info.fieldMs = timer.milliseconds();
     info.fieldBytes = drag->field.bytes();
     drag->approximate.assign(m_points.size(), 0);
     timer.restart();
-    buildDragCaches(*drag);
+    buildDragCaches(*drag, cancel);
+    if (cancelled()) return prepared;
     info.cacheMs = timer.milliseconds();
     for (const PointDragCache& c : drag->caches)
         if (c.valid) {
@@ -136,7 +140,7 @@ bool RelightPreview::isFieldDrag(const scene::Scene& edited, const scene::Change
     return true;
 }
 
-void RelightPreview::buildDragCaches(FieldDrag& f) const {
+void RelightPreview::buildDragCaches(FieldDrag& f, const std::atomic<bool>* cancel) const {
     scene::Scene without = *m_scene;
     without.objects.erase(without.objects.begin() + std::ptrdiff_t(f.object));
     f.bvhWithout = scene::buildBvh(without);
@@ -180,7 +184,7 @@ void RelightPreview::buildDragCaches(FieldDrag& f) const {
     }
     util::parallelFor(m_points.size(), m_settings.threads, [&](size_t i) {
         const PreviewPoint& p = m_points[i];
-        if (!p.hit || p.object == f.object) return;
+        if (!p.hit || p.object == f.object || (cancel && cancel->load(std::memory_order_relaxed))) return;
         PointState without = m_states[i];
         if (occludedBy(without, f.object)) { // T' differs from T: its coefficients and 4 pi <T'_K, L>
             std::erase_if(without.occlusions, [&](const Occlusion& o) { return o.object == f.object; });

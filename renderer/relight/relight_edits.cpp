@@ -69,10 +69,15 @@ EditSummary RelightPreview::applyChanges(const scene::Scene& edited, const scene
     ++m_revision;
     if (m_field) {
         if (useField && !deferMovedObjects && isFieldDrag(edited, changes)) return applyFieldDrag(edited);
+        // The field's masks live in world axes about the object's centre: a translation keeps
+        // them (also one taken the exact way), a rotation, scale or another mesh does not.
         bool dropField = structural(*m_scene, edited, changes);
-        for (const scene::Invalidation& inv : changes.invalidations())
-            dropField = dropField || (inv.factor == scene::FactorKind::ObjectGeometry &&
-                                      inv.id == m_scene->objects[m_field->object].id);
+        if (!dropField) {
+            const scene::Object& was = m_scene->objects[m_field->object];
+            const scene::Object& now = edited.objects[m_field->object];
+            dropField = was.id != now.id || was.mesh != now.mesh || was.transform.rotationDeg != now.transform.rotationDeg ||
+                        was.transform.scale != now.transform.scale;
+        }
         settleFieldDrag(dropField);
     }
     EditSummary summary;

@@ -32,6 +32,7 @@
 #include "util/image.h"
 #include "util/result.h"
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -117,7 +118,8 @@ public:
     // the state it read — reusing this preview's field of the object when the settings match
     // (its masks stay valid while the object only translates); installShadowField takes them
     // when no edit came in between (else false: prepare again). Nothing is prepared (an invalid
-    // result) while some point's terms come from a field.
+    // result) while some point's terms come from a field, nor when `cancel` (if given) is set
+    // before it is done (checked per field sample and per point: it ends within a block of them).
     struct PreparedShadowField {
         ShadowFieldInfo info;
         bool valid() const { return drag != nullptr; }
@@ -127,7 +129,8 @@ public:
         std::unique_ptr<FieldDrag> drag;
         uint64_t revision = 0;
     };
-    PreparedShadowField prepareShadowField(size_t object, const ShadowFieldSettings& settings = {}) const;
+    PreparedShadowField prepareShadowField(size_t object, const ShadowFieldSettings& settings = {},
+                                           const std::atomic<bool>* cancel = nullptr) const;
     bool installShadowField(PreparedShadowField&& prepared);
     // Whether a translation of `object` would be a field drag now without building anything
     // first (its field installed, the drag caches built).
@@ -237,7 +240,8 @@ private:
     std::unique_ptr<FieldDrag> m_field;
     uint64_t m_revision = 0; // counts applyChanges calls: what a prepared field was built from
     EditSummary applyFieldDrag(const scene::Scene& edited);
-    void buildDragCaches(FieldDrag& f) const; // from the current points and states
+    // From the current points and states; `cancel` set: ends early, the caches incomplete.
+    void buildDragCaches(FieldDrag& f, const std::atomic<bool>* cancel = nullptr) const;
     // Before any other edit: the exact state back; `dropField` also forgets the field.
     void settleFieldDrag(bool dropField);
 };

@@ -11,7 +11,7 @@
 namespace wavelit::relight {
 
 ShadowField ShadowField::build(const ObjectOccluder& occluder, const TexelDirections& maskDirs,
-                               const ShadowFieldSettings& settings, int threads) {
+                               const ShadowFieldSettings& settings, int threads, const std::atomic<bool>* cancel) {
     ShadowField f;
     f.m_settings = settings;
     f.m_dirs = std::make_shared<const TexelDirections>(settings.directionLevel);
@@ -30,6 +30,7 @@ ShadowField ShadowField::build(const ObjectOccluder& occluder, const TexelDirect
     TexelBits all = makeBits(maskDirs.count());
     for (size_t t = 0; t < maskDirs.count(); ++t) setBit(all, t);
     util::parallelFor(shells * dirCount, threads, [&](size_t n) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return;
         const glm::vec3 origin = occluder.bounds.centre + f.sampleOffset(n / dirCount, n % dirCount);
         const TexelBits cone = coneTexels(occluder.bounds, origin, maskDirs, all);
         if (!anyBit(cone)) return;

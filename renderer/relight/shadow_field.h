@@ -20,6 +20,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -43,8 +44,10 @@ struct ShadowFieldSettings {
 class ShadowField {
 public:
     // The field of `occluder` where it is now (its bounds' centre is the field's origin).
+    // `cancel`, when given and set meanwhile, ends the build early (an incomplete field: drop it).
     static ShadowField build(const ObjectOccluder& occluder, const TexelDirections& maskDirs,
-                             const ShadowFieldSettings& settings, int threads);
+                             const ShadowFieldSettings& settings, int threads,
+                             const std::atomic<bool>* cancel = nullptr);
 
     // The mask (words() words, maskDirs' texels) at `offset` = point - the object's bounding
     // centre; null beyond the outer shell's reach.

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -34,6 +35,25 @@ EditSummary move(RelightPreview& preview, scene::Scene& scene, const glm::vec3& 
     EXPECT_TRUE(changes.setProperty(scene, {scene::EntityKind::Object, kBoxId}, "translation", to));
     EXPECT_TRUE(changes.apply(scene));
     return preview.applyChanges(scene, changes);
+}
+
+// (0) prepareShadowField with its cancel flag set gives nothing; unset, what enableShadowField
+// installs, and installShadowField refuses it once an edit came in between.
+TEST(RelightShadowField, PreparedFieldIsCancelledOrInstalledOnlyOnTheStateItRead) {
+    scene::Scene scene = testing::makeRelightScene();
+    auto preview = RelightPreview::create(scene, testing::smallSettings());
+    ASSERT_TRUE(preview);
+    std::atomic<bool> cancel{true};
+    EXPECT_FALSE((*preview)->prepareShadowField(kBox, {}, &cancel).valid());
+    cancel = false;
+    RelightPreview::PreparedShadowField prepared = (*preview)->prepareShadowField(kBox, {}, &cancel);
+    ASSERT_TRUE(prepared.valid());
+    EXPECT_GT(prepared.info.cachedPoints, 0u);
+    RelightPreview::PreparedShadowField stale = (*preview)->prepareShadowField(kBox);
+    EXPECT_TRUE((*preview)->installShadowField(std::move(prepared)));
+    EXPECT_TRUE((*preview)->fieldDragReady(kBox));
+    move(**preview, scene, glm::vec3(0.1f, 0.5f, 0.0f)); // an edit: `stale` read the state before it
+    EXPECT_FALSE((*preview)->installShadowField(std::move(stale)));
 }
 
 // (1a) At every sample position the field's mask is the ray-cast one, bit for bit.

@@ -2,7 +2,8 @@
 // first answer on every drag frame (labelled approximate in the frame and the status label), then,
 // as the drag goes on, the full preview through the object's shadow field (built beside the drag),
 // and once the drag pauses the exact preview, which equals a preview built from scratch on the
-// final scene (relight_worker.h; docs/relighting.md §6, §7.0k). Real window, real mouse events through the
+// final scene; selecting the object builds its field before a drag, whose first frame then takes
+// it (relight_worker.h; docs/relighting.md §6, §7.0k). Real window, real mouse events through the
 // move gizmo, the path tracer on lavapipe with validation on; no timing is asserted.
 #include "app/error_reporter.h"
 #include "app/main_window.h"
@@ -18,6 +19,7 @@
 #include "relight/relight_preview.h"
 #include "util/image_compare.h"
 
+#include <QTreeWidget>
 #include <QtTest>
 
 #include <cmath>
@@ -182,6 +184,31 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
                              kTimeoutMs);
     QVERIFY2(window.errors()->count() == 0, qPrintable(window.errors()->lastMessage()));
     QCOMPARE(renderer->latestFrame().validationMessages, 0);
+
+    // Selecting the ring builds its field beside the tracer (the caches; the field itself stayed
+    // from the drag), so the next drag's first frame already goes through it.
+    window.outline()->tree()->clearSelection();
+    QVERIFY(window.outline()->select(ring));
+    QTRY_VERIFY_WITH_TIMEOUT(renderer->relightFieldReady(ring.id), kTimeoutMs);
+    const auto gizmo2 = gizmoGeometry(*window.document()->scene(), ring,
+                                      ViewProjection(window.document()->scene()->camera, size.width(), size.height()),
+                                      viewport->imagePixelsPerScreenPixel());
+    QVERIFY(gizmo2);
+    const QPointF from2(gizmo2->centre.x, gizmo2->centre.y);
+    sendMouse(viewport, QEvent::MouseButtonPress, from2, Qt::LeftButton, Qt::LeftButton);
+    sendMouse(viewport, QEvent::MouseMove, from2 + QPointF(-1.5, 0.5), Qt::NoButton, Qt::LeftButton);
+    const quint64 dragged = renderer->generation();
+    QTRY_VERIFY_WITH_TIMEOUT(renderer->latestPreview().generation == dragged, kTimeoutMs);
+    qInfo("first frame of a drag after the selection: %s", qPrintable(renderer->latestPreview().lastUpdate));
+    QVERIFY2(renderer->latestPreview().approximate && renderer->latestPreview().lastUpdate.contains("shadowField"),
+             qPrintable(renderer->latestPreview().lastUpdate));
+    sendMouse(viewport, QEvent::MouseButtonRelease, from2 + QPointF(-1.5, 0.5), Qt::LeftButton, Qt::NoButton);
+    QTRY_VERIFY_WITH_TIMEOUT(renderer->latestPreview().generation == dragged && !renderer->latestPreview().approximate,
+                             kTimeoutMs);
+    const scene::Scene& final2 = *window.document()->scene();
+    auto scratch3 = relight::RelightPreview::create(final2, RelightWorker::previewSettings(final2, kSize, kSize));
+    QVERIFY(scratch3);
+    QVERIFY(util::maxRelativeDifference(*renderer->latestPreview().image, (*scratch3)->image(kSize, kSize)) <= 1e-6);
 }
 
 QTEST_MAIN(ViewportRelightDragTest)
