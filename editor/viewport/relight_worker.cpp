@@ -117,6 +117,8 @@ bool RelightWorker::fieldReady(scene::EntityId object) {
 }
 
 void RelightWorker::drop(quint64 generation) {
+    if (m_preview)
+        if (auto kept = m_preview->keptField()) m_keptField = std::move(kept);
     m_preview.reset();
     m_previewGeneration = 0;
     m_fineTimer->stop();
@@ -189,6 +191,7 @@ void RelightWorker::rebuild() {
     if (!created) return; // the path tracer shows the scene (and reports real problems)
     m_preview = std::move(created.value());
     m_preview->enableFieldDrags(fieldDragSettings());
+    if (m_keptField) m_preview->offerField(*m_keptField);
     m_previewGeneration = m_latestGeneration;
     publish(m_latestGeneration, QStringLiteral("relight preview built in %1 ms (%2 points, %3; coarse-to-fine "
                                                "+%4)")

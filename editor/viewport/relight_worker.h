@@ -95,6 +95,8 @@ private:
     std::shared_ptr<RenderShared> m_shared;
     std::optional<RenderJob> m_pending;
     std::unique_ptr<relight::CoarseToFinePreview> m_preview;
+    // The dropped preview's shadow field, offered to the next one (a camera move keeps it valid).
+    std::optional<relight::CoarseToFinePreview::KeptField> m_keptField;
     quint64 m_previewGeneration = 0; // the job whose scene the preview holds
     std::shared_ptr<const scene::Scene> m_latestScene; // the newest job's scene (for rebuilds)
     quint64 m_latestGeneration = 0;

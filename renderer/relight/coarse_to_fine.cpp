@@ -61,11 +61,23 @@ void CoarseToFinePreview::collectFieldBuild(Collect how) {
     m_fine->installShadowField(m_fieldBuild.get());
 }
 
+std::optional<CoarseToFinePreview::KeptField> CoarseToFinePreview::keptField() const {
+    const std::optional<size_t> object = m_fine->shadowFieldObject();
+    if (!object) return std::nullopt;
+    const scene::Object& o = m_fine->scene().objects[*object];
+    return KeptField{o.id, o.mesh, o.transform.rotationDeg, o.transform.scale, m_fine->shadowFieldShared()};
+}
+
 void CoarseToFinePreview::startFieldBuild(size_t object) {
+    std::shared_ptr<const ShadowField> reuse;
+    const scene::Object& o = m_fine->scene().objects[object];
+    if (m_offered && m_offered->object == o.id && m_offered->mesh == o.mesh &&
+        m_offered->rotationDeg == o.transform.rotationDeg && m_offered->scale == o.transform.scale)
+        reuse = m_offered->field;
     m_cancelBuild.store(false);
     m_fieldBuild = std::async(std::launch::async, [fine = m_fine.get(), object, settings = *m_fieldSettings,
-                                                   cancel = &m_cancelBuild] {
-        return fine->prepareShadowField(object, settings, cancel);
+                                                   cancel = &m_cancelBuild, reuse = std::move(reuse)] {
+        return fine->prepareShadowField(object, settings, cancel, reuse);
     });
 }
 

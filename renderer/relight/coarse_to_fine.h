@@ -71,6 +71,19 @@ public:
     // The same without waiting: installs a finished build, then says whether `object`'s drag
     // frames would take the field now.
     bool fieldDragReady(size_t object);
+    // A shadow field outlives its preview: it depends on the object's mesh, rotation and scale,
+    // not on the camera. keptField() is the full preview's field with what it depends on (none:
+    // nullopt); offerField() hands one to a later preview (the editor's, rebuilt after a camera
+    // move), whose next build of that object takes it instead of building a new one while the
+    // object's mesh, rotation and scale are still the same (its caches alone are built).
+    struct KeptField {
+        scene::EntityId object = scene::kInvalidId;
+        std::shared_ptr<const scene::TriangleMesh> mesh;
+        glm::vec3 rotationDeg{0.0f}, scale{1.0f};
+        std::shared_ptr<const ShadowField> field;
+    };
+    std::optional<KeptField> keptField() const;
+    void offerField(KeptField kept) { m_offered = std::move(kept); }
     static constexpr const char* kUntruncatedCoarseLobes = "untruncated, coarse lobes";
     // Brings the full preview up to the newest edited scene with every pending change set merged
     // into one (an empty summary, kind "display", when nothing is pending). A field still being
@@ -124,6 +137,7 @@ private:
     std::optional<ShadowFieldSettings> m_fieldSettings;
     std::future<RelightPreview::PreparedShadowField> m_fieldBuild;
     std::atomic<bool> m_cancelBuild{false};
+    std::optional<KeptField> m_offered;
     bool m_fieldAhead = false;
     void startFieldBuild(size_t object);
     // A field being built: Poll installs it into the full preview if it is ready, Wait once it

@@ -201,5 +201,42 @@ TEST(RelightCoarseToFine, FieldDragFramesGoToTheFullPreviewAndSettleExactly) {
     preview->reset();
 }
 
+// A field outlives its preview (a camera move rebuilds the editor's): offered to a new preview of
+// the same object it is taken as it is (the same field, not a copy), unless the object's rotation
+// changed since.
+TEST(RelightCoarseToFine, OfferedFieldIsTakenWhileTheObjectOnlyTranslated) {
+    scene::Scene scene = testing::makeRelightScene();
+    const RelightSettings settings = testing::smallSettings();
+    constexpr size_t kBox = 1;
+    ShadowFieldSettings field;
+    field.reuseOwnStates = true;
+    auto first = CoarseToFinePreview::create(scene, settings, -1, 2, true);
+    ASSERT_TRUE(first);
+    EXPECT_FALSE((*first)->keptField());
+    (*first)->enableFieldDrags(field);
+    ASSERT_TRUE((*first)->prepareFieldDrag(kBox));
+    ASSERT_TRUE((*first)->waitForFieldDrag(kBox));
+    const auto kept = (*first)->keptField();
+    ASSERT_TRUE(kept && kept->field);
+    EXPECT_EQ(kept->object, scene.objects[kBox].id);
+
+    auto offeredTo = [&](const scene::Scene& s) -> const ShadowField* {
+        auto next = CoarseToFinePreview::create(s, settings, -1, 2, true);
+        if (!next) return nullptr;
+        (*next)->enableFieldDrags(field);
+        (*next)->offerField(*kept);
+        EXPECT_TRUE((*next)->prepareFieldDrag(kBox));
+        EXPECT_TRUE((*next)->waitForFieldDrag(kBox));
+        return (*next)->fine().shadowField() == kept->field.get() ? kept->field.get() : nullptr;
+    };
+    scene::Scene moved = scene; // another camera and a translation: the same field
+    moved.camera.position = {0.5f, 2.0f, 5.5f};
+    moved.objects[kBox].transform.translation += glm::vec3(0.2f, 0.0f, 0.1f);
+    EXPECT_EQ(offeredTo(moved), kept->field.get());
+    scene::Scene rotated = scene; // a rotation: a field of its own
+    rotated.objects[kBox].transform.rotationDeg = {0.0f, 30.0f, 0.0f};
+    EXPECT_EQ(offeredTo(rotated), nullptr);
+}
+
 } // namespace
 } // namespace wavelit::relight

@@ -74,21 +74,25 @@ ShadowFieldInfo RelightPreview::enableShadowField(size_t object, const ShadowFie
 
 RelightPreview::PreparedShadowField RelightPreview::prepareShadowField(size_t object,
                                                                        const ShadowFieldSettings& settings,
-                                                                       const std::atomic<bool>* cancel) const {
+                                                                       const std::atomic<bool>* cancel,
+                                                                       std::shared_ptr<const ShadowField> reuse) const {
     PreparedShadowField prepared;
     if (object >= m_occluders.size() || fieldApproximate()) return prepared;
     auto drag = std::make_unique<FieldDrag>();
     drag->object = object;
     ShadowFieldInfo& info = prepared.info;
     util::Timer timer;
-    if (m_field && m_field->object == object && m_field->field.settings() == settings)
+    if (reuse && reuse->settings() == settings && reuse->maskTexels() == m_dirs.count())
+        drag->field = std::move(reuse);
+    else if (m_field && m_field->object == object && m_field->field->settings() == settings)
         drag->field = m_field->field; // world-axis masks about the object's centre: still valid
     else
-        drag->field = ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads, cancel);
+        drag->field = std::make_shared<const ShadowField>(
+            ShadowField::build(m_occluders[object], m_dirs, settings, m_settings.threads, cancel));
     auto cancelled = [&] { return cancel && cancel->load(); };
     if (cancelled()) return prepared;
     info.fieldMs = timer.milliseconds();
-    info.fieldBytes = drag->field.bytes();
+    info.fieldBytes = drag->field->bytes();
     drag->approximate.assign(m_points.size(), 0);
     timer.restart();
     buildDragCaches(*drag, cancel);
@@ -164,7 +168,7 @@ void RelightPreview::buildDragCaches(FieldDrag& f, const std::atomic<bool>* canc
     f.ownOcclusions.clear();
     f.ownGrid.clear();
     const bool convex = own.convexFront && own.convexBack;
-    const bool reuse = f.field.settings().reuseOwnStates;
+    const bool reuse = f.field->settings().reuseOwnStates;
     if (!convex || reuse) {
         for (size_t i = 0; i < m_points.size(); ++i) {
             const PreviewPoint& p = m_points[i];
@@ -241,9 +245,9 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     TransferContext ctxWithout = ctx;
     ctxWithout.sceneBvh = &f.bvhWithout;
     const CameraRays rays(m_scene->camera, m_settings.width, m_settings.height);
-    const bool nearest = !f.field.settings().interpolate;
+    const bool nearest = !f.field->settings().interpolate;
     const bool ownConvex = m_occluders[j].convexFront && m_occluders[j].convexBack;
-    const bool reuseOwn = f.field.settings().reuseOwnStates;
+    const bool reuseOwn = f.field->settings().reuseOwnStates;
     std::atomic<int64_t> rebuiltNs{0}; // time of the rebuilt points (hit changed, or own)
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
         reused(m_points.size(), 0), carried(m_points.size(), 0);
@@ -303,7 +307,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
         const float* weights = nullptr;
         const uint64_t* mask = nullptr;
         ShadowField::Blend blend;
-        if (!nearest && f.field.blend(origin - sphere.centre, blend)) {
+        if (!nearest && f.field->blend(origin - sphere.centre, blend)) {
             weight.resize(m_dirs.count());
             unionBits.assign(cache.visible.size(), 0);
             for (size_t w = 0; w < unionBits.size(); ++w) {
@@ -326,7 +330,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
             mask = unionBits.data();
             weights = weight.data();
         } else if (nearest) {
-            mask = f.field.lookup(origin - sphere.centre);
+            mask = f.field->lookup(origin - sphere.centre);
         }
         TexelBits cast_;
         if (!mask) { // beyond the outer shell: j covers a few texels, ray-cast them

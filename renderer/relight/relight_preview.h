@@ -129,8 +129,11 @@ public:
         std::unique_ptr<FieldDrag> drag;
         uint64_t revision = 0;
     };
+    // `reuse`: a field of this object built by another preview (the caller vouches that the
+    // object's mesh, rotation and scale are the same), taken when its settings match.
     PreparedShadowField prepareShadowField(size_t object, const ShadowFieldSettings& settings = {},
-                                           const std::atomic<bool>* cancel = nullptr) const;
+                                           const std::atomic<bool>* cancel = nullptr,
+                                           std::shared_ptr<const ShadowField> reuse = nullptr) const;
     bool installShadowField(PreparedShadowField&& prepared);
     // Whether a translation of `object` would be a field drag now without building anything
     // first (its field installed, the drag caches built).
@@ -140,7 +143,13 @@ public:
     size_t approximatePoints() const; // how many
     // Per point: whether the last applyChanges did any work on it.
     const std::vector<uint8_t>& lastTouched() const { return m_touched; }
-    const ShadowField* shadowField() const { return m_field ? &m_field->field : nullptr; }
+    const ShadowField* shadowField() const { return m_field ? m_field->field.get() : nullptr; }
+    // The installed field and its object (null: none), for a later preview of the same scene
+    // (prepareShadowField's `reuse`).
+    std::shared_ptr<const ShadowField> shadowFieldShared() const { return m_field ? m_field->field : nullptr; }
+    std::optional<size_t> shadowFieldObject() const {
+        return m_field ? std::optional<size_t>(m_field->object) : std::nullopt;
+    }
     const std::vector<PointDragCache>* dragCaches() const { return m_field ? &m_field->caches : nullptr; }
     const std::vector<glm::vec3>& fieldEnvTexels() const; // L(t) dOmega per texel (tests)
 
@@ -217,7 +226,7 @@ private:
     // The shadow-field drag (field_drag.cpp).
     struct FieldDrag {
         size_t object = 0;
-        ShadowField field;
+        std::shared_ptr<const ShadowField> field; // shared with preparations that reuse it
         scene::Bvh bvhWithout;              // every object but `object`
         std::vector<glm::vec3> envTexels;   // L(t) x dOmega
         std::vector<PointDragCache> caches; // per point; invalid for misses and the object's own

@@ -16,6 +16,7 @@ ShadowField ShadowField::build(const ObjectOccluder& occluder, const TexelDirect
     f.m_settings = settings;
     f.m_dirs = std::make_shared<const TexelDirections>(settings.directionLevel);
     f.m_words = makeBits(maskDirs.count()).size();
+    f.m_maskTexels = maskDirs.count();
     const size_t shells = size_t(std::max(1, settings.shells));
     const float radius = std::max(occluder.bounds.radius, 1e-6f);
     const float inner = settings.innerRatio * radius, outer = std::max(settings.outerRatio, settings.innerRatio) * radius;

@@ -69,6 +69,7 @@ public:
     size_t shells() const { return m_radii.size(); }
     size_t directions() const { return m_dirs ? m_dirs->count() : 0; }
     size_t words() const { return m_words; }
+    size_t maskTexels() const { return m_maskTexels; } // the mask grid's texel count
     size_t bytes() const {
         return m_masks.size() * sizeof(uint64_t) + m_radii.size() * sizeof(float) + m_inside.size();
     }
@@ -80,7 +81,7 @@ private:
     std::shared_ptr<const TexelDirections> m_dirs; // sample directions
     std::vector<float> m_radii;
     float m_logInner = 0.0f, m_logStep = 1.0f, m_reach = 0.0f;
-    size_t m_words = 0;
+    size_t m_words = 0, m_maskTexels = 0;
     std::vector<uint64_t> m_masks; // (shell * directions + direction) * words
     // Per sample: inside the object (its rays hit it in >= 98% of the directions). Reported, not
     // used: leaving them out of blends made the ring's contact zone worse (relighting.md §7.0e).
