@@ -54,7 +54,8 @@ size_t PointDragCache::bytes() const {
     return b;
 }
 
-PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPoint& p, const PointState& without) {
+PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPoint& p, const PointState& without,
+                              const std::vector<glm::vec3>* envTexels) {
     PointDragCache c;
     c.valid = true;
     c.visible = without.lit;
@@ -68,12 +69,24 @@ PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPo
     }
     thread_local std::vector<glm::vec3> white, black;
     visibleTransferTexels(ctxWithout, p, without, white, black);
-    c.affine = !without.transfer0.index.empty();
+    c.affine = envTexels ? !black.empty() : !without.transfer0.index.empty();
     c.channels = allGrey(white) && allGrey(black) ? 1 : 3;
     append(c.values, white, c.channels);
     if (c.affine) append(c.values, black, c.channels);
     c.envBase = without.envTerm;
     c.envBase0 = without.envTerm0;
+    if (envTexels) { // the visible texels in order, as untruncatedTerms sums them
+        glm::dvec3 env(0.0), env0(0.0);
+        size_t j = 0;
+        for (size_t w = 0; w < c.visible.size(); ++w)
+            for (uint64_t bits = c.visible[w]; bits; bits &= bits - 1, ++j) {
+                const glm::dvec3 l((*envTexels)[w * 64 + size_t(__builtin_ctzll(bits))]);
+                env += glm::dvec3(white[j]) * l;
+                if (c.affine) env0 += glm::dvec3(black[j]) * l;
+            }
+        c.envBase = glm::vec3(env);
+        c.envBase0 = glm::vec3(env0);
+    }
     const auto& lights = ctxWithout.scene->lighting.lights;
     c.lights.resize(lights.size());
     c.lightTexels.assign(lights.size(), makeBits(ctxWithout.dirs->count()));

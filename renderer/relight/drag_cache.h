@@ -42,7 +42,11 @@ struct PointDragCache {
 
 // `without`: the point's state with O_j left out and T, T_0 and the environment terms built from
 // it; `ctxWithout`: the preview's context with sceneBvh on every object but j.
-PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPoint& p, const PointState& without);
+// With `envTexels` (L(t) x the texel solid angle) `without` needs its visibility only
+// (visibilityState): the environment base is then the untruncated texel sum of T' L (what every
+// Haar coefficient of T' would give), not 4 pi <T'_K, L>, and no T is built.
+PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPoint& p, const PointState& without,
+                              const std::vector<glm::vec3>* envTexels = nullptr);
 
 // The point's terms (envTerm(0), lightTerms(0)) with j's mask `mask` (null or all zero: j blocks
 // nothing) and j's bounding sphere now. `envTexels`: L(t) x the texel solid angle, per texel.

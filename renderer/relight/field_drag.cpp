@@ -292,9 +292,11 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
                 reused[i] = self ? 1 : 0;
                 return;
             }
-            // A surface the object uncovered: its factors without the object, then the field.
-            s = buildPointState(ctx, p, uint32_t(j));
-            cache = buildDragCache(ctxWithout, p, s);
+            // A surface the object uncovered: its visibility without the object and the cache
+            // from it (no T: the terms come from the cache, and the settle rebuilds it), then the
+            // field.
+            s = visibilityState(ctx, p, uint32_t(j));
+            cache = buildDragCache(ctxWithout, p, s, &f.envTexels);
             rebuilt[i] = 1;
         } else if (!p.hit || !cache.valid) {
             return;

@@ -323,6 +323,13 @@ static TexelBits aboveBits(const TexelDirections& dirs, const PreviewPoint& p) {
 
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,
                            const TexelBits* selfBlocked) {
+    PointState s = visibilityState(ctx, p, skipObject, selfBlocked);
+    updateTransferAndTerms(ctx, p, s);
+    return s;
+}
+
+PointState visibilityState(const TransferContext& ctx, const PreviewPoint& p, uint32_t skipObject,
+                           const TexelBits* selfBlocked) {
     PointState s;
     const TexelDirections& dirs = *ctx.dirs;
     TexelBits above = aboveBits(dirs, p);
@@ -337,7 +344,6 @@ PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p, ui
     for (size_t w = 0; w < s.lit.size(); ++w) s.lit[w] &= ~self[w];
     for (uint32_t j = 0; j < ctx.occluders->size(); ++j)
         if (j != skipObject) updateOcclusion(ctx, p, s, j);
-    updateTransferAndTerms(ctx, p, s);
     return s;
 }
 

@@ -106,6 +106,11 @@ glm::vec3 rayOrigin(const PreviewPoint& p);
 // surface cache (relight_preview.h).
 PointState buildPointState(const TransferContext& ctx, const PreviewPoint& p,
                            uint32_t skipObject = UINT32_MAX, const TexelBits* selfBlocked = nullptr);
+// buildPointState's visibility alone: the horizon, self-visibility and the other objects'
+// occlusions (every object but `skipObject`), no T and no terms — for a point whose terms come
+// from elsewhere until it is rebuilt (the shadow-field drag's uncovered surface, drag_cache.h).
+PointState visibilityState(const TransferContext& ctx, const PreviewPoint& p,
+                           uint32_t skipObject = UINT32_MAX, const TexelBits* selfBlocked = nullptr);
 // Re-casts object j's occlusion over the lit texels its bounding cone may cover and
 // stores it when anything is blocked (never for the point's own object: that is Õ1).
 void updateOcclusion(const TransferContext& ctx, const PreviewPoint& p, PointState& s, uint32_t j);
