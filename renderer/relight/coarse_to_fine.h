@@ -132,8 +132,9 @@ private:
     std::optional<scene::ChangeSet> m_coarseBehind;
     bool m_deferMovedObjects = false;
     void snapshot();
-    // Field drags (enableFieldDrags): the settings, the build in flight and its object, and
-    // whether the full preview took edits through the field since its exact state.
+    // Field drags (enableFieldDrags): the settings, the build in flight and its cancel flag, a
+    // field offered by an earlier preview, and whether the full preview took edits through the
+    // field since its exact state.
     std::optional<ShadowFieldSettings> m_fieldSettings;
     std::future<RelightPreview::PreparedShadowField> m_fieldBuild;
     std::atomic<bool> m_cancelBuild{false};

@@ -138,6 +138,7 @@ public:
     // Whether a translation of `object` would be a field drag now without building anything
     // first (its field installed, the drag caches built).
     bool fieldDragReady(size_t object) const;
+    // Whether applyChanges(edited, changes) would take the field: only translations of its object.
     bool isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const;
     bool fieldApproximate() const; // some point's terms come from the field
     size_t approximatePoints() const; // how many
