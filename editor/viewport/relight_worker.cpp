@@ -52,6 +52,7 @@ QString kiB(size_t bytes) { return QString::number(double(bytes) / 1024.0, 'f', 
 relight::ShadowFieldSettings RelightWorker::fieldDragSettings() {
     relight::ShadowFieldSettings settings; // the field of docs/relighting.md §7.0e
     settings.reuseOwnStates = true;        // the moved object's own points without rays (§7.0j)
+    settings.carriedLobeCut = 2.0f;        // their narrow lobes within two caps (§7.0k)
     return settings;
 }
 

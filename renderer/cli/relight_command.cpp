@@ -28,7 +28,9 @@
 // --field-directions L (2^L squared per shell), --field-inner R / --field-outer R (shell radii over
 // the bounding radius), --field-nearest (the nearest sample, not the 8-sample blend),
 // --field-carry-own (the moved object's own points carry their visibility from the drag start's
-// nearest point of it: ShadowFieldSettings::reuseOwnStates, §7.0j)): the report's "shadowField"
+// nearest point of it: ShadowFieldSettings::reuseOwnStates, §7.0j; --field-lobe-cut C sums their
+// narrow lobes within C cap angles of the mirror direction only, carriedLobeCut, §7.0k)): the
+// report's "shadowField"
 // block says what the field and the per-point caches cost, and each edit's "method" ("shadowField"
 // or "exact"), pointsRebuilt, fieldFallbacks, selfMasksReused, statesCarried and cacheMs;
 // --field-check also keeps an exact preview beside it and reports each edit's fieldVsExactRelRMSE
@@ -97,7 +99,8 @@ double processCpuMs() {
 int runRelight(const std::vector<std::string>& argv) {
     auto args = Args::parse(argv, {"--edits", "--out", "--report", "--reference-spp", "--width",
                                    "--height", "--preview", "--level", "--keep", "--threads", "--coarse-level", "--coarse-stride",
-                                   "--field-shells", "--field-directions", "--field-inner", "--field-outer"},
+                                   "--field-shells", "--field-directions", "--field-inner", "--field-outer",
+                                   "--field-lobe-cut"},
                             {"--skip-full-rebuild", "--shadow-field", "--field-check", "--field-nearest", "--field-carry-own",
                              "--first-untruncated-narrow"});
     if (!args) return reportError(args.error());
@@ -126,7 +129,8 @@ int runRelight(const std::vector<std::string>& argv) {
     fieldSettings.interpolate = !args->has("--field-nearest");
     fieldSettings.reuseOwnStates = args->has("--field-carry-own");
     for (auto [flag, target] : {std::pair{"--field-inner", &fieldSettings.innerRatio},
-                                std::pair{"--field-outer", &fieldSettings.outerRatio}})
+                                std::pair{"--field-outer", &fieldSettings.outerRatio},
+                                std::pair{"--field-lobe-cut", &fieldSettings.carriedLobeCut}})
         if (auto v = args->value(flag)) {
             char* end = nullptr;
             const float x = std::strtof(v->c_str(), &end);
@@ -204,6 +208,7 @@ int runRelight(const std::vector<std::string>& argv) {
                            {"directionSide", 1 << fieldSettings.directionLevel},
                            {"interpolate", fieldSettings.interpolate},
                            {"carryOwnStates", fieldSettings.reuseOwnStates},
+                           {"carriedLobeCut", fieldSettings.carriedLobeCut},
                            {"insideSamples", (*preview)->shadowField()->insideSamples()},
                            {"innerRatio", fieldSettings.innerRatio}, {"outerRatio", fieldSettings.outerRatio},
                            {"fieldMs", info.fieldMs}, {"fieldBytes", info.fieldBytes}, {"cacheMs", info.cacheMs},

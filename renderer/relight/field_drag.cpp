@@ -248,6 +248,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
     const bool nearest = !f.field->settings().interpolate;
     const bool ownConvex = m_occluders[j].convexFront && m_occluders[j].convexBack;
     const bool reuseOwn = f.field->settings().reuseOwnStates;
+    const float lobeCut = f.field->settings().carriedLobeCut;
     std::atomic<int64_t> rebuiltNs{0}; // time of the rebuilt points (hit changed, or own)
     std::vector<uint8_t> touched(m_points.size(), 0), rebuilt(m_points.size(), 0), fallback(m_points.size(), 0),
         reused(m_points.size(), 0), carried(m_points.size(), 0);
@@ -282,7 +283,7 @@ EditSummary RelightPreview::applyFieldDrag(const scene::Scene& edited) {
                 const TexelBits* self = k >= 0 && !ownConvex ? &f.ownSelf[size_t(k)] : nullptr;
                 if (k >= 0 && reuseOwn) { // no rays, no T: the nearest point's visibility carried
                     s = carriedVisibilityState(ctx, p, self, f.ownOcclusions[size_t(k)], f.envTexels,
-                                               LobeAverage::Full);
+                                               LobeAverage::Full, lobeCut);
                     f.approximate[i] = kCarriedState;
                     carried[i] = 1;
                 } else {

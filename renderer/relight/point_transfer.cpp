@@ -268,11 +268,14 @@ void updateTransferAndTerms(const TransferContext& ctx, const PreviewPoint& p, P
 
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                       const std::vector<glm::vec3>& envTexels, PointTerms& out,
-                      LobeAverage average) {
+                      LobeAverage average, float lobeCut) {
     thread_local TexelValues values;
     const ResolvedMaterial& m = materialOf(ctx, p);
     const bool affine = m.colourUse == ColourUse::Affine;
-    visibleTexelValues(ctx, p, s, affine, values, average);
+    float cosCut = -2.0f; // every visible texel
+    if (lobeCut > 0.0f && m.narrow && m.cosCap > -1.0f)
+        cosCut = float(std::cos(std::min(std::numbers::pi, double(lobeCut) * std::acos(std::min(1.0, double(m.cosCap))))));
+    visibleTexelValues(ctx, p, s, affine, values, average, cosCut);
     glm::dvec3 env(0.0), env0(0.0);
     if (affine && m.oneEval) { // grey values: one channel of each
         for (size_t j = 0; j < values.texel.size(); ++j) {
@@ -296,6 +299,10 @@ void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const P
     slot.resize(ctx.dirs->count(), -1);
     for (size_t j = 0; j < values.texel.size(); ++j) slot[values.texel[j]] = int32_t(j);
     auto texelValue = [&](size_t texel, glm::vec3* f0) {
+        if (slot[texel] < 0) { // beyond the lobe's cut
+            if (affine) *f0 = glm::vec3(0.0f);
+            return glm::vec3(0.0f);
+        }
         const size_t j = size_t(slot[texel]);
         if (affine) *f0 = values.black[j];
         return values.white[j];
@@ -349,7 +356,7 @@ PointState visibilityState(const TransferContext& ctx, const PreviewPoint& p, ui
 
 PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint& p, const TexelBits* selfBlocked,
                                   const std::vector<Occlusion>& occlusions, const std::vector<glm::vec3>& envTexels,
-                                  LobeAverage average) {
+                                  LobeAverage average, float lobeCut) {
     PointState s;
     s.above = aboveBits(*ctx.dirs, p);
     s.lit = s.above;
@@ -362,7 +369,7 @@ PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint
         if (any) s.occlusions.push_back(std::move(within));
     }
     PointTerms terms;
-    untruncatedTerms(ctx, p, s, envTexels, terms, average);
+    untruncatedTerms(ctx, p, s, envTexels, terms, average, lobeCut);
     s.envTerm = terms.envTerm;
     s.envTerm0 = terms.envTerm0;
     s.lightTerms = std::move(terms.lightTerms);

@@ -155,10 +155,12 @@ glm::vec3 mixTerms(const ResolvedMaterial& m, const PointTerms& t, const glm::ve
 enum class LobeAverage { Full, Coarse };
 
 // Reads s's visibility only, so s may hold T of another material. `average`: how a narrow lobe's
-// texels are averaged.
+// texels are averaged. lobeCut > 0: a narrow lobe is summed only over the texels within lobeCut x
+// its cap's half-angle of the mirror direction (the cap holds >= 89% of the lobe by the plugins'
+// contract; what lies beyond lobeCut caps is left out: an approximation, docs/relighting.md §7.0k).
 void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
                       const std::vector<glm::vec3>& envTexels, PointTerms& out,
-                      LobeAverage average);
+                      LobeAverage average, float lobeCut = 0.0f);
 
 // A point's state without rays and without T (the shadow-field drag's moved object,
 // relight_preview.h): its horizon from its own normals, its self-visibility `selfBlocked` (null:
@@ -168,7 +170,7 @@ void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const P
 // edit that reads T.
 PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint& p, const TexelBits* selfBlocked,
                                   const std::vector<Occlusion>& occlusions, const std::vector<glm::vec3>& envTexels,
-                                  LobeAverage average);
+                                  LobeAverage average, float lobeCut = 0.0f);
 
 // T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
 // values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF

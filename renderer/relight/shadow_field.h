@@ -38,6 +38,10 @@ struct ShadowFieldSettings {
     // it (self and other objects' occlusion) and their terms untruncated with their own BRDF,
     // instead of rays and a new T.
     bool reuseOwnStates = false;
+    // With reuseOwnStates, > 0: those points' narrow lobes summed only within carriedLobeCut x
+    // the lobe's cap angle of the mirror direction (untruncatedTerms' lobeCut; the editor's 2:
+    // docs/relighting.md §7.0k). 0: every visible texel.
+    float carriedLobeCut = 0.0f;
     bool operator==(const ShadowFieldSettings&) const = default;
 };
 

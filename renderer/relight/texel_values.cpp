@@ -124,7 +124,7 @@ void greyValues(const uint32_t* first, size_t texels, const float* z, const Chan
 // visibleTexelValues with a narrow lobe's texels averaged over Sub x Sub sub-directions.
 template <int Sub>
 void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                        bool withBlack, TexelValues& out) {
+                        bool withBlack, TexelValues& out, float cosCut) {
     constexpr bool kFull = Sub == TexelDirections::kSub;
     static_assert(kFull || Sub == TexelDirections::kCoarseSub);
     const TexelDirections& grid = *ctx.dirs;
@@ -149,9 +149,10 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
                    localZ.data());
     size_t texels = 0;
     forEachVisibleTexel(s, [&](size_t t) {
+        const glm::vec3 local(localX[t], localY[t], localZ[t]);
+        if (m.narrow && glm::dot(local, mirror) < cosCut) return;
         out.texel[texels] = uint32_t(t);
         dirs.first[texels++] = uint32_t(dirs.size);
-        const glm::vec3 local(localX[t], localY[t], localZ[t]);
         if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
             const size_t at = dirs.size;
             if constexpr (kFull)
@@ -207,11 +208,11 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
 } // namespace
 
 void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
-                        TexelValues& out, LobeAverage average) {
+                        TexelValues& out, LobeAverage average, float cosCut) {
     if (average == LobeAverage::Coarse)
-        valuesAveragedOver<TexelDirections::kCoarseSub>(ctx, p, s, withBlack, out);
+        valuesAveragedOver<TexelDirections::kCoarseSub>(ctx, p, s, withBlack, out, cosCut);
     else
-        valuesAveragedOver<TexelDirections::kSub>(ctx, p, s, withBlack, out);
+        valuesAveragedOver<TexelDirections::kSub>(ctx, p, s, withBlack, out, cosCut);
 }
 
 } // namespace wavelit::relight

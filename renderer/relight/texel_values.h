@@ -42,8 +42,10 @@ struct TexelValues {
     std::vector<uint32_t> texel;
     std::vector<glm::vec3> white, black;
 };
-// LobeAverage (point_transfer.h): how the narrow lobe's texels are averaged.
+// LobeAverage (point_transfer.h): how the narrow lobe's texels are averaged. cosCut: a narrow
+// lobe's texels whose centre lies further than acos(cosCut) from the mirror direction are left
+// out (untruncatedTerms' lobeCut; -2: none).
 void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
-                        TexelValues& out, LobeAverage average = LobeAverage::Full);
+                        TexelValues& out, LobeAverage average = LobeAverage::Full, float cosCut = -2.0f);
 
 } // namespace wavelit::relight
