@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 
 #include <algorithm>
+#include <optional>
 
 namespace wavelit::editor {
 namespace {
@@ -46,6 +47,20 @@ bool assetsLoaded(const scene::Scene& scene) {
 }
 
 QString kiB(size_t bytes) { return QString::number(double(bytes) / 1024.0, 'f', 0) + QStringLiteral(" KiB"); }
+
+// The edit's kind for the status label, with the method when there is one ("object (shadowField)").
+QString kindOf(const relight::EditSummary& summary) {
+    const QString kind = QString::fromStdString(summary.kind);
+    return summary.method.empty() ? kind
+                                  : QStringLiteral("%1 (%2)").arg(kind, QString::fromStdString(summary.method));
+}
+
+// The index of the object with this id in `scene`, if any.
+std::optional<size_t> objectIndex(const scene::Scene& scene, scene::EntityId id) {
+    for (size_t j = 0; j < scene.objects.size(); ++j)
+        if (scene.objects[j].id == id) return j;
+    return std::nullopt;
+}
 
 } // namespace
 
@@ -104,17 +119,13 @@ void RelightWorker::submit(RenderJob job) {
 
 void RelightWorker::prepareObject(scene::EntityId object) {
     if (cancelled() || m_pending || !m_preview || m_preview->finePending()) return;
-    const auto& objects = m_preview->fine().scene().objects;
-    for (size_t j = 0; j < objects.size(); ++j)
-        if (objects[j].id == object) m_preview->prepareFieldDrag(j);
+    if (const auto j = objectIndex(m_preview->fine().scene(), object)) m_preview->prepareFieldDrag(*j);
 }
 
 bool RelightWorker::fieldReady(scene::EntityId object) {
     if (!m_preview) return false;
-    const auto& objects = m_preview->fine().scene().objects;
-    for (size_t j = 0; j < objects.size(); ++j)
-        if (objects[j].id == object) return m_preview->fieldDragReady(j);
-    return false;
+    const auto j = objectIndex(m_preview->fine().scene(), object);
+    return j && m_preview->fieldDragReady(*j);
 }
 
 void RelightWorker::drop(quint64 generation) {
@@ -153,13 +164,9 @@ void RelightWorker::step() {
     if (handling == Handling::Exact) m_preview->applyFine(); // with any first-answer edits pending
     m_previewGeneration = job.generation;
     const bool first = m_preview->finePending();
-    const QString kind = summary.method.empty()
-                             ? QString::fromStdString(summary.kind)
-                             : QStringLiteral("%1 (%2)").arg(QString::fromStdString(summary.kind),
-                                                             QString::fromStdString(summary.method));
     publish(job.generation, QStringLiteral("relight %1: %2, %3 points in %4 ms")
                                 .arg(first ? QStringLiteral("first answer") : QStringLiteral("preview"))
-                                .arg(kind)
+                                .arg(kindOf(summary))
                                 .arg(summary.pointsTouched)
                                 .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 1));
     if (first) m_fineTimer->start(); // restarted by every drag frame: fires once the drag pauses
@@ -172,12 +179,8 @@ void RelightWorker::refine() {
     QElapsedTimer timer;
     timer.start();
     const relight::EditSummary summary = m_preview->applyFine();
-    const QString kind = summary.method.empty()
-                             ? QString::fromStdString(summary.kind)
-                             : QStringLiteral("%1 (%2)").arg(QString::fromStdString(summary.kind),
-                                                             QString::fromStdString(summary.method));
     publish(m_previewGeneration, QStringLiteral("relight preview after the pause: %1, %2 points in %3 ms")
-                                     .arg(kind)
+                                     .arg(kindOf(summary))
                                      .arg(summary.pointsTouched)
                                      .arg(double(timer.nsecsElapsed()) * 1e-6, 0, 'f', 0));
 }

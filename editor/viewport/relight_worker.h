@@ -24,8 +24,9 @@
 // a first answer: linear radiance of direct lighting (the preview has no interreflection),
 // upsampled (nearest point) to the render size and tone-mapped here.
 // The controller decides what the viewport shows (render_controller.h: the hand-over).
-// Shutdown waits for a running build or edit, and a field being built (not interruptible: relight_preview.h; ~0.5-2 s for
-// a 128^2 build on 2 cores, or a full update after a drag, docs/relighting.md §7).
+// Shutdown cancels a shadow field being built and waits for a running build or edit (not
+// interruptible: relight_preview.h; ~0.5-2 s for a 128^2 build on 2 cores, or a full update
+// after a drag, docs/relighting.md §7).
 #pragma once
 
 #include "viewport/render_frame.h"

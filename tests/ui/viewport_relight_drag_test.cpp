@@ -23,6 +23,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <optional>
 
 using namespace wavelit;
 using namespace wavelit::editor;
@@ -80,11 +81,17 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
     QVERIFY(window.outline()->select(ring));
     QTRY_VERIFY(!viewport->imageSize().isEmpty());
     const QSize size = viewport->imageSize();
-    const auto gizmo = gizmoGeometry(*window.document()->scene(), ring,
-                                     ViewProjection(window.document()->scene()->camera, size.width(), size.height()),
-                                     viewport->imagePixelsPerScreenPixel());
+    // Where the ring's move gizmo is now (its centre square), in image pixels.
+    auto gizmoCentre = [&]() -> std::optional<QPointF> {
+        const auto gizmo = gizmoGeometry(*window.document()->scene(), ring,
+                                         ViewProjection(window.document()->scene()->camera, size.width(), size.height()),
+                                         viewport->imagePixelsPerScreenPixel());
+        if (!gizmo) return std::nullopt;
+        return QPointF(gizmo->centre.x, gizmo->centre.y);
+    };
+    const auto gizmo = gizmoCentre();
     QVERIFY(gizmo);
-    const QPointF from(gizmo->centre.x, gizmo->centre.y);
+    const QPointF from = *gizmo;
     sendMouse(viewport, QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
     for (int i = 1; i <= kDragFrames; ++i) {
         const quint64 before = renderer->generation();
@@ -190,11 +197,9 @@ void ViewportRelightDragTest::objectDragShowsFirstAnswersThenTheExactPreview() {
     window.outline()->tree()->clearSelection();
     QVERIFY(window.outline()->select(ring));
     QTRY_VERIFY_WITH_TIMEOUT(renderer->relightFieldReady(ring.id), kTimeoutMs);
-    const auto gizmo2 = gizmoGeometry(*window.document()->scene(), ring,
-                                      ViewProjection(window.document()->scene()->camera, size.width(), size.height()),
-                                      viewport->imagePixelsPerScreenPixel());
+    const auto gizmo2 = gizmoCentre();
     QVERIFY(gizmo2);
-    const QPointF from2(gizmo2->centre.x, gizmo2->centre.y);
+    const QPointF from2 = *gizmo2;
     sendMouse(viewport, QEvent::MouseButtonPress, from2, Qt::LeftButton, Qt::LeftButton);
     sendMouse(viewport, QEvent::MouseMove, from2 + QPointF(-1.5, 0.5), Qt::NoButton, Qt::LeftButton);
     const quint64 dragged = renderer->generation();
