@@ -3,12 +3,12 @@
 #include "viewport/render_worker.h"
 #include "viewport/tone_map.h"
 
+#include "relight/edit_rules.h"
 #include "relight/sphere_level.h"
 
 #include <QElapsedTimer>
 
 #include <algorithm>
-#include <optional>
 
 namespace wavelit::editor {
 namespace {
@@ -55,12 +55,6 @@ QString kindOf(const relight::EditSummary& summary) {
                                   : QStringLiteral("%1 (%2)").arg(kind, QString::fromStdString(summary.method));
 }
 
-// The index of the object with this id in `scene`, if any.
-std::optional<size_t> objectIndex(const scene::Scene& scene, scene::EntityId id) {
-    for (size_t j = 0; j < scene.objects.size(); ++j)
-        if (scene.objects[j].id == id) return j;
-    return std::nullopt;
-}
 
 } // namespace
 
@@ -119,13 +113,15 @@ void RelightWorker::submit(RenderJob job) {
 
 void RelightWorker::prepareObject(scene::EntityId object) {
     if (cancelled() || m_pending || !m_preview || m_preview->finePending()) return;
-    if (const auto j = objectIndex(m_preview->fine().scene(), object)) m_preview->prepareFieldDrag(*j);
+    const auto& objects = m_preview->fine().scene().objects;
+    if (const size_t j = relight::indexOf(objects, object); j < objects.size()) m_preview->prepareFieldDrag(j);
 }
 
 bool RelightWorker::fieldReady(scene::EntityId object) {
     if (!m_preview) return false;
-    const auto j = objectIndex(m_preview->fine().scene(), object);
-    return j && m_preview->fieldDragReady(*j);
+    const auto& objects = m_preview->fine().scene().objects;
+    const size_t j = relight::indexOf(objects, object);
+    return j < objects.size() && m_preview->fieldDragReady(j);
 }
 
 void RelightWorker::drop(quint64 generation) {

@@ -30,9 +30,9 @@
 // --field-carry-own (the moved object's own points carry their visibility from the drag start's
 // nearest point of it: ShadowFieldSettings::reuseOwnStates, §7.0j; --field-lobe-cut C sums their
 // narrow lobes within C cap angles of the mirror direction only, carriedLobeCut, §7.0k)): the
-// report's "shadowField"
-// block says what the field and the per-point caches cost, and each edit's "method" ("shadowField"
-// or "exact"), pointsRebuilt, fieldFallbacks, selfMasksReused, statesCarried and cacheMs;
+// report's "shadowField" block says what the field and the per-point caches cost, and each edit's
+// "method" ("shadowField" or "exact"), pointsRebuilt, fieldFallbacks, selfMasksReused,
+// statesCarried and cacheMs;
 // --field-check also keeps an exact preview beside it and reports each edit's fieldVsExactRelRMSE
 // (the field's image against the exact, ray-cast one).
 // Exit codes: 0 success, 1 bad input (message names the file), 2 bad usage.

@@ -1,10 +1,11 @@
 #include "relight/coarse_to_fine.h"
 
+#include "relight/edit_rules.h"
+
 #include "util/timer.h"
 
 #include <algorithm>
 #include <chrono>
-#include <variant>
 
 namespace wavelit::relight {
 
@@ -36,22 +37,6 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
 }
 
 CoarseToFinePreview::~CoarseToFinePreview() { collectFieldBuild(Collect::Cancel); }
-
-std::optional<size_t> CoarseToFinePreview::translatedObject(const scene::Scene& edited,
-                                                            const scene::ChangeSet& changes) const {
-    if (changes.edits().empty() || edited.objects.size() != m_fine->scene().objects.size()) return std::nullopt;
-    std::optional<scene::EntityRef> entity;
-    for (const scene::Edit& e : changes.edits()) {
-        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
-        if (!edit || edit->entity.kind != scene::EntityKind::Object || edit->property != "translation" ||
-            (entity && edit->entity != *entity))
-            return std::nullopt;
-        entity = edit->entity;
-    }
-    for (size_t j = 0; j < edited.objects.size(); ++j)
-        if (edited.objects[j].id == entity->id) return j;
-    return std::nullopt;
-}
 
 void CoarseToFinePreview::collectFieldBuild(Collect how) {
     if (!m_fieldBuild.valid()) return;
@@ -104,7 +89,11 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
     scene::ChangeSet merged = m_pending ? m_pending->changes : scene::ChangeSet{};
     merged.merge(changes);
     collectFieldBuild(Collect::Poll);
-    const std::optional<size_t> moved = m_fieldSettings ? translatedObject(edited, merged) : std::nullopt;
+    // The object every edit since the full preview's state translates, if one (a drag's frames).
+    std::optional<size_t> moved;
+    if (const auto id = onlyTranslatedObject(merged);
+        m_fieldSettings && id && edited.objects.size() == m_fine->scene().objects.size())
+        if (const size_t j = indexOf(edited.objects, *id); j < edited.objects.size()) moved = j;
     if (moved && !m_fieldBuild.valid() && m_fine->fieldDragReady(*moved)) {
         // Every edit since the full preview's state translates the field's object: the full
         // preview takes them through the field; the coarse one gets them with applyFine.

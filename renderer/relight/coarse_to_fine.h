@@ -145,8 +145,6 @@ private:
     // is, Cancel stops it and drops it.
     enum class Collect { Poll, Wait, Cancel };
     void collectFieldBuild(Collect how);
-    // The object a change set only translates, if one.
-    std::optional<size_t> translatedObject(const scene::Scene& edited, const scene::ChangeSet& changes) const;
 };
 
 } // namespace wavelit::relight

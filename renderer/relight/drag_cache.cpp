@@ -1,5 +1,7 @@
 #include "relight/drag_cache.h"
 
+#include "relight/texel_values.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -67,23 +69,18 @@ PointDragCache buildDragCache(const TransferContext& ctxWithout, const PreviewPo
         c.rank[w] = uint16_t(count);
         count += uint32_t(__builtin_popcountll(c.visible[w]));
     }
-    thread_local std::vector<glm::vec3> white, black;
-    visibleTransferTexels(ctxWithout, p, without, white, black);
-    c.affine = envTexels ? !black.empty() : !without.transfer0.index.empty();
-    c.channels = allGrey(white) && allGrey(black) ? 1 : 3;
-    append(c.values, white, c.channels);
-    if (c.affine) append(c.values, black, c.channels);
+    // T' at the visible texels (rebuildTransfer's values: a grey-affine BRDF's are grey already).
+    thread_local TexelValues values;
+    visibleTexelValues(ctxWithout, p, without, materialOf(ctxWithout, p).colourUse == ColourUse::Affine, values);
+    c.affine = envTexels ? !values.black.empty() : !without.transfer0.index.empty();
+    c.channels = allGrey(values.white) && allGrey(values.black) ? 1 : 3;
+    append(c.values, values.white, c.channels);
+    if (c.affine) append(c.values, values.black, c.channels);
     c.envBase = without.envTerm;
     c.envBase0 = without.envTerm0;
-    if (envTexels) { // the visible texels in order, as untruncatedTerms sums them
-        glm::dvec3 env(0.0), env0(0.0);
-        size_t j = 0;
-        for (size_t w = 0; w < c.visible.size(); ++w)
-            for (uint64_t bits = c.visible[w]; bits; bits &= bits - 1, ++j) {
-                const glm::dvec3 l((*envTexels)[w * 64 + size_t(__builtin_ctzll(bits))]);
-                env += glm::dvec3(white[j]) * l;
-                if (c.affine) env0 += glm::dvec3(black[j]) * l;
-            }
+    if (envTexels) { // untruncated, as untruncatedTerms sums them
+        glm::dvec3 env, env0;
+        environmentSums(values, *envTexels, env, env0);
         c.envBase = glm::vec3(env);
         c.envBase0 = glm::vec3(env0);
     }

@@ -4,6 +4,7 @@
 #include "relight/relight_preview.h"
 
 #include "relight/camera_lights.h"
+#include "relight/edit_rules.h"
 #include "util/parallel_for.h"
 #include "util/timer.h"
 #include "wavelet/haar.h"
@@ -135,13 +136,9 @@ const std::vector<glm::vec3>& RelightPreview::fieldEnvTexels() const {
 }
 
 bool RelightPreview::isFieldDrag(const scene::Scene& edited, const scene::ChangeSet& changes) const {
-    if (!m_field || changes.edits().empty() || edited.objects.size() != m_scene->objects.size()) return false;
-    const scene::EntityRef ref{scene::EntityKind::Object, m_scene->objects[m_field->object].id};
-    for (const scene::Edit& e : changes.edits()) {
-        const auto* edit = std::get_if<scene::PropertyEdit>(&e);
-        if (!edit || edit->entity != ref || edit->property != "translation") return false;
-    }
-    return true;
+    if (!m_field || edited.objects.size() != m_scene->objects.size()) return false;
+    const std::optional<scene::EntityId> moved = onlyTranslatedObject(changes);
+    return moved && *moved == m_scene->objects[m_field->object].id;
 }
 
 void RelightPreview::buildDragCaches(FieldDrag& f, const std::atomic<bool>* cancel) const {

@@ -144,6 +144,7 @@ ResolvedMaterial resolveMaterial(const scene::Material& m, double texelRadius) {
         r.narrow = true;
         const double cap = lobe.capHalfAngle + 2.0 * texelRadius;
         r.cosCap = cap >= 3.14159265358979 ? -2.0f : float(std::cos(cap));
+        r.capAngle = std::acos(std::clamp(double(r.cosCap), -1.0, 1.0)); // of the float cosine kept
     }
     return r;
 }
@@ -274,22 +275,10 @@ void untruncatedTerms(const TransferContext& ctx, const PreviewPoint& p, const P
     const bool affine = m.colourUse == ColourUse::Affine;
     float cosCut = -2.0f; // every visible texel
     if (lobeCut > 0.0f && m.narrow && m.cosCap > -1.0f)
-        cosCut = float(std::cos(std::min(std::numbers::pi, double(lobeCut) * std::acos(std::min(1.0, double(m.cosCap))))));
+        cosCut = float(std::cos(std::min(std::numbers::pi, double(lobeCut) * m.capAngle)));
     visibleTexelValues(ctx, p, s, affine, values, average, cosCut);
-    glm::dvec3 env(0.0), env0(0.0);
-    if (affine && m.oneEval) { // grey values: one channel of each
-        for (size_t j = 0; j < values.texel.size(); ++j) {
-            const glm::dvec3 l(envTexels[values.texel[j]]);
-            env += double(values.white[j].x) * l;
-            env0 += double(values.black[j].x) * l;
-        }
-    } else {
-        for (size_t j = 0; j < values.texel.size(); ++j) {
-            const glm::dvec3 l(envTexels[values.texel[j]]);
-            env += glm::dvec3(values.white[j]) * l;
-            if (affine) env0 += glm::dvec3(values.black[j]) * l;
-        }
-    }
+    glm::dvec3 env, env0;
+    environmentSums(values, envTexels, env, env0);
     out.envTerm = glm::vec3(env);
     out.envTerm0 = glm::vec3(env0);
     // The light terms as lightTermWith sums them, taking f x cosine at visible texels from the
@@ -375,15 +364,6 @@ PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint
     s.lightTerms = std::move(terms.lightTerms);
     s.lightTerms0 = std::move(terms.lightTerms0);
     return s;
-}
-
-void visibleTransferTexels(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                           std::vector<glm::vec3>& white, std::vector<glm::vec3>& black) {
-    thread_local TexelValues values;
-    // rebuildTransfer's values: a grey-affine BRDF's are grey already (one channel of each kept).
-    visibleTexelValues(ctx, p, s, materialOf(ctx, p).colourUse == ColourUse::Affine, values);
-    white = values.white;
-    black = values.black;
 }
 
 void seenLightContributions(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,

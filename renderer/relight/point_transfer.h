@@ -79,6 +79,7 @@ struct ResolvedMaterial {
     // the centre, which would alias a highlight in or out of the texel.
     bool narrow = false;
     float cosCap = 1.0f;
+    double capAngle = 0.0; // acos(cosCap): the cap's half-angle (radians), for untruncatedTerms' lobe cut
 };
 
 // The material as the preview uses it; texelRadius from the sphere grid.
@@ -172,11 +173,6 @@ PointState carriedVisibilityState(const TransferContext& ctx, const PreviewPoint
                                   const std::vector<Occlusion>& occlusions, const std::vector<glm::vec3>& envTexels,
                                   LobeAverage average, float lobeCut = 0.0f);
 
-// T at every visible texel of s (lit, not blocked by s.occlusions), ascending texel order, the
-// values rebuildTransfer transforms (before its 2^-n scaling): white, and black for an Affine BRDF
-// (else empty). For the shadow field's drag cache (drag_cache.h).
-void visibleTransferTexels(const TransferContext& ctx, const PreviewPoint& p, const PointState& s,
-                           std::vector<glm::vec3>& white, std::vector<glm::vec3>& black);
 // One entry of light k that a point sees, with its share of <T, L_k> (white, black for Affine).
 struct LightContribution {
     uint32_t texel = 0;

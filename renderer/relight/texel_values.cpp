@@ -150,10 +150,11 @@ void valuesAveragedOver(const TransferContext& ctx, const PreviewPoint& p, const
     size_t texels = 0;
     forEachVisibleTexel(s, [&](size_t t) {
         const glm::vec3 local(localX[t], localY[t], localZ[t]);
-        if (m.narrow && glm::dot(local, mirror) < cosCut) return;
+        const float toMirror = m.narrow ? glm::dot(local, mirror) : 0.0f; // the cosine to it
+        if (m.narrow && toMirror < cosCut) return;
         out.texel[texels] = uint32_t(t);
         dirs.first[texels++] = uint32_t(dirs.size);
-        if (m.narrow && glm::dot(local, mirror) >= m.cosCap) {
+        if (m.narrow && toMirror >= m.cosCap) {
             const size_t at = dirs.size;
             if constexpr (kFull)
                 directionsToLocal(frame, kCount, grid.subX(t), grid.subY(t), grid.subZ(t), &dirs.x[at],
@@ -213,6 +214,17 @@ void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const
         valuesAveragedOver<TexelDirections::kCoarseSub>(ctx, p, s, withBlack, out, cosCut);
     else
         valuesAveragedOver<TexelDirections::kSub>(ctx, p, s, withBlack, out, cosCut);
+}
+
+void environmentSums(const TexelValues& v, const std::vector<glm::vec3>& envTexels, glm::dvec3& env,
+                     glm::dvec3& env0) {
+    env = env0 = glm::dvec3(0.0);
+    const bool black = !v.black.empty();
+    for (size_t j = 0; j < v.texel.size(); ++j) {
+        const glm::dvec3 l(envTexels[v.texel[j]]);
+        env += glm::dvec3(v.white[j]) * l;
+        if (black) env0 += glm::dvec3(v.black[j]) * l;
+    }
 }
 
 } // namespace wavelit::relight

@@ -48,4 +48,10 @@ struct TexelValues {
 void visibleTexelValues(const TransferContext& ctx, const PreviewPoint& p, const PointState& s, bool withBlack,
                         TexelValues& out, LobeAverage average = LobeAverage::Full, float cosCut = -2.0f);
 
+// The untruncated environment terms of values v (untruncatedTerms, and the drag cache's base for
+// a surface the drag uncovers): the sum over v's texels in order of value x envTexels[texel]
+// (L(t) x the texel solid angle), in double — white into env, black into env0 (0 when v has none).
+void environmentSums(const TexelValues& v, const std::vector<glm::vec3>& envTexels, glm::dvec3& env,
+                     glm::dvec3& env0);
+
 } // namespace wavelit::relight
