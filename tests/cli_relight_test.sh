@@ -49,16 +49,17 @@ for key in '"coarse": {' '"coarseMs"' '"coarseImageMs"' '"coarseRelRMSE"'; do
 done
 expect 2 "--coarse-level" -- relight "$scene" --edits "$tmp/one.json" --out "$tmp/x" --report "$tmp/x.json" --coarse-level 9
 
-# The shadow-field drag (docs/relighting.md §7.0e, §7.0j): with --field-carry-own the ring's own
-# points carry their visibility (statesCarried), and the report says so; small field.
+# The shadow-field drag (docs/relighting.md §7.0e, §7.0j, §7.0k): with --field-carry-own the ring's
+# own points carry their visibility (statesCarried), with --field-lobe-cut their narrow lobes are
+# cut, and the report says so; small field.
 cat > "$tmp/drag.json" <<'JSON'
 [{"entity": "object:ring", "property": "translation", "value": [0.05, 0.12, 0.0]},
  {"entity": "object:ring", "property": "translation", "value": [0.08, 0.12, 0.02]}]
 JSON
 expect 0 -- relight "$scene" --edits "$tmp/drag.json" --out "$tmp/field" --report "$tmp/field.json" \
     --width 32 --height 32 --preview 32 --level 3 --keep 16 --shadow-field --field-shells 4 --field-directions 3 \
-    --field-check --field-carry-own
-for key in '"carryOwnStates": true' '"method": "shadowField"' '"fieldVsExactRelRMSE"'; do
+    --field-check --field-carry-own --field-lobe-cut 2
+for key in '"carryOwnStates": true' '"carriedLobeCut": 2' '"method": "shadowField"' '"fieldVsExactRelRMSE"'; do
     grep -qF "$key" "$tmp/field.json" || fail "field report lacks $key: $(cat "$tmp/field.json")"
 done
 grep -qE '"statesCarried": [1-9]' "$tmp/field.json" || fail "no own point carried: $(grep statesCarried "$tmp/field.json")"

@@ -38,6 +38,11 @@ util::Result<std::unique_ptr<CoarseToFinePreview>> CoarseToFinePreview::create(c
 
 CoarseToFinePreview::~CoarseToFinePreview() { collectFieldBuild(Collect::Cancel); }
 
+void CoarseToFinePreview::holdBackFromCoarse(const scene::ChangeSet& changes) {
+    if (m_coarseBehind) m_coarseBehind->merge(changes);
+    else m_coarseBehind = changes;
+}
+
 void CoarseToFinePreview::collectFieldBuild(Collect how) {
     if (!m_fieldBuild.valid()) return;
     if (how == Collect::Poll && m_fieldBuild.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
@@ -98,8 +103,7 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
         // Every edit since the full preview's state translates the field's object: the full
         // preview takes them through the field; the coarse one gets them with applyFine.
         EditSummary summary = m_fine->applyChanges(edited, merged);
-        if (m_coarseBehind) m_coarseBehind->merge(changes);
-        else m_coarseBehind = changes;
+        holdBackFromCoarse(changes);
         m_pending.reset();
         m_material.reset();
         m_fieldAhead = true;
@@ -120,8 +124,7 @@ EditSummary CoarseToFinePreview::applyCoarse(const scene::Scene& edited, const s
         summary.pointsTouched = material->pointsTouched;
         summary.pointsMs = timer.milliseconds();
         m_material = std::move(material->image);
-        if (m_coarseBehind) m_coarseBehind->merge(changes);
-        else m_coarseBehind = changes;
+        holdBackFromCoarse(changes);
     } else {
         m_material.reset();
         scene::ChangeSet coarse = changes;

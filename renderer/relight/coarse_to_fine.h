@@ -130,6 +130,7 @@ private:
     // those edits, which the coarse preview has not had yet.
     std::optional<util::ImageRGB> m_material;
     std::optional<scene::ChangeSet> m_coarseBehind;
+    void holdBackFromCoarse(const scene::ChangeSet& changes); // merged into m_coarseBehind
     bool m_deferMovedObjects = false;
     void snapshot();
     // Field drags (enableFieldDrags): the settings, the build in flight and its cancel flag, a
